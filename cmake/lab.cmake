@@ -1,0 +1,45 @@
+# Shared settings for every target of the lab, applied per target (no global flags).
+add_library(lab_options INTERFACE)
+target_compile_features(lab_options INTERFACE cxx_std_17)
+target_compile_options(lab_options INTERFACE -Wall -Wextra -Wpedantic -Wno-unused-parameter)
+
+function(lab_defaults target)
+	target_link_libraries(${target} PRIVATE lab_options)
+	if(LAB_LTO)
+		set_property(TARGET ${target} PROPERTY INTERPROCEDURAL_OPTIMIZATION_RELEASE ON)
+	endif()
+endfunction()
+
+# The seven task files. Each is compiled once per implementation (student/ and reference/) into an
+# object library named task<N>_<impl>; programs choose one implementation per task at link time.
+set(LAB_TASK_FILES
+	task1_camera.cpp
+	task2_shapes.cpp
+	task3_bvh.cpp
+	task4_path.cpp
+	task5_materials.cpp
+	task6_direct_lighting.cpp
+	task7_env_light.cpp)
+
+# lab_link_tasks(<target> <impl of task 1> ... <impl of task 7>): link the chosen implementations.
+function(lab_link_tasks target)
+	set(n 1)
+	foreach(impl IN LISTS ARGN)
+		target_link_libraries(${target} PRIVATE task${n}_${impl})
+		math(EXPR n "${n} + 1")
+	endforeach()
+	target_link_libraries(${target} PRIVATE framework)
+endfunction()
+
+# The implementation list with task <n> from <impl_n> and every other task from the reference.
+function(lab_mix out n impl_n)
+	set(list "")
+	foreach(i RANGE 1 7)
+		if(i EQUAL n)
+			list(APPEND list ${impl_n})
+		else()
+			list(APPEND list reference)
+		endif()
+	endforeach()
+	set(${out} ${list} PARENT_SCOPE)
+endfunction()

@@ -1,0 +1,40 @@
+#include "film.h"
+
+void Pixel_Stats::add(Spectrum sample) {
+	if (!is_finite(sample)) {
+		non_finite++;
+		return;
+	}
+	count++;
+	glm::dvec3 x(sample);
+	glm::dvec3 delta = x - mean;
+	mean += delta / double(count);
+	m2 += delta * (x - mean);
+}
+
+HDR_Image Film::mean() const {
+	HDR_Image image(w, h);
+	for (size_t i = 0; i < pixels.size(); i++) image.pixels[i] = Spectrum(pixels[i].mean);
+	return image;
+}
+
+HDR_Image Film::variance() const {
+	HDR_Image image(w, h);
+	for (size_t i = 0; i < pixels.size(); i++) {
+		const Pixel_Stats& p = pixels[i];
+		image.pixels[i] = p.count > 1 ? Spectrum(p.m2 / double(p.count - 1)) : Spectrum{0.0f};
+	}
+	return image;
+}
+
+uint64_t Film::non_finite() const {
+	uint64_t total = 0;
+	for (const Pixel_Stats& p : pixels) total += p.non_finite;
+	return total;
+}
+
+HDR_Image Film::non_finite_map() const {
+	HDR_Image image(w, h);
+	for (size_t i = 0; i < pixels.size(); i++) image.pixels[i] = Spectrum(pixels[i].non_finite > 0 ? 1.0f : 0.0f);
+	return image;
+}

@@ -1,0 +1,30 @@
+#pragma once
+// The film: per-pixel running mean and variance of the samples, and a count of non-finite samples
+// (which are never added to the mean but always reported).
+#include "hdr_image.h"
+
+#include <vector>
+
+struct Pixel_Stats {
+	// Welford's online algorithm, in double precision per channel.
+	void add(Spectrum sample);
+
+	uint32_t count = 0;     // finite samples added
+	uint32_t non_finite = 0;
+	glm::dvec3 mean{0.0};
+	glm::dvec3 m2{0.0};     // sum of squared deviations from the mean
+};
+
+struct Film {
+	Film(uint32_t w, uint32_t h) : w(w), h(h), pixels(size_t(w) * h) {
+	}
+
+	HDR_Image mean() const;
+	// Per-sample variance estimate s^2 (unbiased, n - 1); the variance of the mean is s^2 / n.
+	HDR_Image variance() const;
+	uint64_t non_finite() const;
+	HDR_Image non_finite_map() const; // 1 where a pixel had a non-finite sample
+
+	uint32_t w, h;
+	std::vector<Pixel_Stats> pixels;
+};

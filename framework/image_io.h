@@ -1,0 +1,12 @@
+#pragma once
+// Image files. PNG is for looking at (exposure, then the sRGB curve, 8 bits); EXR holds linear
+// float data (renders, variances, references). Reading accepts .exr and Radiance .hdr.
+// All functions throw Input_Error with the file name on failure.
+#include "hdr_image.h"
+
+#include <string>
+
+// exposure in stops: each channel is multiplied by 2^exposure before the sRGB curve.
+void write_png(const std::string& path, const HDR_Image& image, float exposure = 0.0f);
+void write_exr(const std::string& path, const HDR_Image& image);
+HDR_Image read_image(const std::string& path); // .exr or .hdr, by extension

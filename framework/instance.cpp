@@ -1,0 +1,36 @@
+#include "instance.h"
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+Ray_Counters& ray_counters() {
+	thread_local Ray_Counters counters;
+	return counters;
+}
+
+Instance::Instance(std::variant<Sphere, Tri_Mesh> shape_, Mat4 to_world_, uint32_t material_, uint32_t index_)
+	: shape(std::move(shape_)), to_world(to_world_), to_local(glm::inverse(to_world_)),
+	  normal_to_world(glm::inverseTranspose(Mat3(to_world_))), material(material_), index(index_) {
+	BBox local = std::visit([](const auto& s) { return s.bbox(); }, shape);
+	if (local.empty()) return;
+	// The world box of a transformed box: enclose its eight transformed corners.
+	for (int corner = 0; corner < 8; corner++) {
+		Vec3 p{corner & 1 ? local.max.x : local.min.x, corner & 2 ? local.max.y : local.min.y,
+		       corner & 4 ? local.max.z : local.min.z};
+		world_bbox.enclose(transform_point(to_world, p));
+	}
+}
+
+Trace Instance::hit(const Ray& ray) const {
+	ray_counters().instance_tests++;
+	// An affine map keeps the ray parameter: to_local(o + t d) = to_local(o) + t * A d.
+	Ray local(transform_point(to_local, ray.point), transform_direction(to_local, ray.dir), ray.dist_bounds,
+	          ray.depth);
+	Trace trace = std::visit([&](const auto& s) { return s.hit(local); }, shape);
+	if (!trace.hit) return trace;
+	trace.origin = ray.point;
+	trace.position = ray.at(trace.distance);
+	trace.normal = glm::normalize(normal_to_world * trace.normal);
+	trace.object = index;
+	trace.material = material;
+	return trace;
+}

@@ -1,0 +1,30 @@
+#pragma once
+// A scene object: a shape in its own local space, placed in the world by a transform.
+#include "shapes.h"
+#include "tri_mesh.h"
+
+#include <variant>
+
+struct Instance {
+	Instance(std::variant<Sphere, Tri_Mesh> shape, Mat4 to_world, uint32_t material, uint32_t index);
+
+	// Intersects the shape in local space (ray parameters t are unchanged by affine transforms)
+	// and returns the hit in world space, with `object` and `material` filled in.
+	Trace hit(const Ray& ray) const;
+	BBox bbox() const {
+		return world_bbox;
+	}
+
+	std::variant<Sphere, Tri_Mesh> shape;
+	Mat4 to_world{1.0f}, to_local{1.0f};
+	Mat3 normal_to_world{1.0f}; // inverse transpose of the linear part
+	uint32_t material = 0;
+	uint32_t index = 0; // position in the scene description
+	BBox world_bbox;
+};
+
+// Counters kept per thread, for the debug views, the graders and the benchmarks.
+struct Ray_Counters {
+	uint64_t instance_tests = 0; // calls of Instance::hit
+};
+Ray_Counters& ray_counters(); // this thread's counters

@@ -1,0 +1,86 @@
+#include "pathtracer.h"
+#include "bvh_visits.h"
+#include "frame.h"
+
+#include <array>
+
+namespace {
+constexpr std::array<std::pair<View, const char*>, 5> VIEW_NAMES{{
+	{View::path, "path"},
+	{View::eye_light, "eye"},
+	{View::normals, "normals"},
+	{View::bvh, "bvh"},
+	{View::direction, "direction"},
+}};
+
+// A perceptually ordered heat ramp (black, blue, magenta, orange, yellow, white) for t in [0, 1].
+Spectrum heat(float t) {
+	constexpr std::array<Spectrum, 6> stops{Spectrum{0.0f, 0.0f, 0.0f}, Spectrum{0.1f, 0.1f, 0.6f},
+	                                        Spectrum{0.7f, 0.1f, 0.6f}, Spectrum{1.0f, 0.4f, 0.1f},
+	                                        Spectrum{1.0f, 0.9f, 0.2f}, Spectrum{1.0f, 1.0f, 1.0f}};
+	t = glm::clamp(t, 0.0f, 1.0f) * float(stops.size() - 1);
+	size_t i = std::min(size_t(t), stops.size() - 2);
+	return glm::mix(stops[i], stops[i + 1], t - float(i));
+}
+} // namespace
+
+bool parse_view(const std::string& name, View& view) {
+	for (auto [v, n] : VIEW_NAMES) {
+		if (name == n) {
+			view = v;
+			return true;
+		}
+	}
+	return false;
+}
+
+const char* view_name(View view) {
+	for (auto [v, n] : VIEW_NAMES) {
+		if (v == view) return n;
+	}
+	return "?";
+}
+
+Pathtracer::Pathtracer(const Scene& scene_, Render_Settings settings_, View view_)
+	: scene(scene_), settings(settings_), view(view_) {
+}
+
+Spectrum Pathtracer::trace(RNG& rng, const Ray& ray) const {
+	if (view != View::path) return debug_view(ray);
+	Trace hit = scene.hit(ray);
+	if (!hit.hit) return scene.environment_radiance(ray.dir);
+	return shade(rng, ray, hit);
+}
+
+Spectrum Pathtracer::eye_light(const Ray& ray, const Trace& hit) const {
+	const BSDF& bsdf = scene.materials[hit.material];
+	Vec3 to_eye = -glm::normalize(ray.dir);
+	float cos_theta = glm::dot(to_eye, hit.normal);
+	return bsdf.albedo() * std::abs(cos_theta) + bsdf.emission(Vec3{0.0f, cos_theta, 0.0f});
+}
+
+Spectrum Pathtracer::debug_view(const Ray& ray) const {
+	if (view == View::direction) return 0.5f * (glm::normalize(ray.dir) + 1.0f);
+	Trace hit = scene.hit(ray);
+	switch (view) {
+	case View::eye_light: return hit.hit ? eye_light(ray, hit) : scene.environment_radiance(ray.dir);
+	case View::normals: return hit.hit ? 0.5f * (hit.normal + 1.0f) : Spectrum{0.0f};
+	case View::bvh: {
+		// 64 or more overlapped nodes saturate the ramp.
+		float nodes = float(count_overlapped_nodes(scene.bvh, ray, hit.hit ? hit.distance : INF_F));
+		return heat(nodes / 64.0f);
+	}
+	default: return Spectrum{0.0f};
+	}
+}
+
+// Light sampling arrives with Part II (task 6); until then scenes report no lights.
+bool Pathtracer::has_lights() const {
+	return false;
+}
+Vec3 Pathtracer::sample_area_lights(RNG&, Vec3) const {
+	return Vec3{0.0f, 1.0f, 0.0f};
+}
+float Pathtracer::area_lights_pdf(Vec3, Vec3) const {
+	return 0.0f;
+}

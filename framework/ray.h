@@ -1,0 +1,27 @@
+#pragma once
+#include "math.h"
+
+// A ray r(t) = point + t * dir.
+//
+// `dir` need not have unit length: rays transformed into an object's local space are scaled.
+// Hit distances are always measured in the ray parameter t, so a hit found in local space has the
+// same t as in world space. For rays made by the camera or the path tracer, dir is unit length and
+// t is the Euclidean distance.
+struct Ray {
+	Ray() = default;
+	Ray(Vec3 point, Vec3 dir, Vec2 dist_bounds = Vec2{0.0f, INF_F}, uint32_t depth = 0)
+		: point(point), dir(dir), dist_bounds(dist_bounds), depth(depth) {
+	}
+
+	Vec3 at(float t) const {
+		return point + t * dir;
+	}
+
+	Vec3 point;
+	Vec3 dir;
+	// A hit counts only when dist_bounds.x <= t <= dist_bounds.y. The path tracer raises .x above 0
+	// so a new ray cannot hit the surface it leaves; a closest-hit search lowers .y as it goes.
+	Vec2 dist_bounds{0.0f, INF_F};
+	// How many times the path has scattered before this ray (the camera ray has depth 0).
+	uint32_t depth = 0;
+};

@@ -1,0 +1,58 @@
+#include "render.h"
+
+#include <algorithm>
+#include <atomic>
+#include <numeric>
+#include <random>
+#include <thread>
+#include <vector>
+
+namespace {
+struct Tile {
+	uint32_t x0, y0, x1, y1;
+};
+
+std::vector<Tile> make_tiles(uint32_t w, uint32_t h, uint32_t size) {
+	std::vector<Tile> tiles;
+	for (uint32_t y = 0; y < h; y += size) {
+		for (uint32_t x = 0; x < w; x += size) tiles.push_back({x, y, std::min(x + size, w), std::min(y + size, h)});
+	}
+	return tiles;
+}
+
+void render_tile(const Pathtracer& pt, const Render_Settings& settings, const Tile& tile, Film& film) {
+	for (uint32_t y = tile.y0; y < tile.y1; y++) {
+		for (uint32_t x = tile.x0; x < tile.x1; x++) {
+			size_t index = size_t(y) * film.w + x;
+			Pixel_Stats& pixel = film.pixels[index];
+			for (uint32_t s = 0; s < settings.samples; s++) {
+				RNG rng = RNG::for_sample(settings.seed, index, s);
+				pixel.add(pt.trace_pixel(x, y, rng));
+			}
+		}
+	}
+}
+} // namespace
+
+Film render(const Pathtracer& pathtracer, const Render_Options& options) {
+	const Render_Settings& settings = pathtracer.settings;
+	Film film(settings.width, settings.height);
+	std::vector<Tile> tiles = make_tiles(settings.width, settings.height, std::max(1u, options.tile_size));
+	if (options.shuffle_tiles) std::shuffle(tiles.begin(), tiles.end(), std::mt19937(12345));
+
+	uint32_t threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+	threads = std::min<uint32_t>(threads, uint32_t(tiles.size()));
+	std::atomic<size_t> next{0}, done{0};
+	auto worker = [&]() {
+		for (size_t i; (i = next.fetch_add(1)) < tiles.size();) {
+			render_tile(pathtracer, settings, tiles[i], film);
+			size_t finished = done.fetch_add(1) + 1;
+			if (options.progress) options.progress(finished, tiles.size());
+		}
+	};
+	std::vector<std::thread> pool;
+	for (uint32_t t = 1; t < threads; t++) pool.emplace_back(worker);
+	worker();
+	for (auto& thread : pool) thread.join();
+	return film;
+}

@@ -1,0 +1,19 @@
+#pragma once
+// Rendering: square tiles of pixels rendered in parallel on a thread pool. Every sample of a pixel
+// is drawn in the same tile, in order, with its own RNG::for_sample generator, so the result is
+// bit-identical for any number of threads and any tile order.
+#include "film.h"
+#include "pathtracer.h"
+
+#include <functional>
+
+struct Render_Options {
+	uint32_t threads = 0;   // 0 = all hardware threads
+	uint32_t tile_size = 16;
+	bool shuffle_tiles = false; // render tiles in a random order (tests determinism)
+	// Called from worker threads with (finished tiles, total tiles); may be empty.
+	std::function<void(size_t, size_t)> progress;
+};
+
+// Renders pathtracer.settings.samples samples of every pixel.
+Film render(const Pathtracer& pathtracer, const Render_Options& options = {});

@@ -1,0 +1,43 @@
+#pragma once
+// A scene as loaded from JSON (see scenes/README.md): camera, film settings, materials, objects,
+// and an optional environment light.
+#include "camera.h"
+#include "env_light.h"
+#include "instance.h"
+#include "material.h"
+
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+struct Render_Settings {
+	uint32_t width = 256;
+	uint32_t height = 256;
+	uint32_t samples = 16;   // samples per pixel
+	uint32_t max_depth = 8;  // maximum number of bounces (see pathtracer.h)
+	uint64_t seed = 0;
+};
+
+using Environment = std::variant<Env_Constant, Env_Map>;
+
+struct Scene {
+	// Builds the top-level BVH over `objects`; call once after filling them in.
+	void commit();
+
+	// Closest hit of a world-space ray.
+	Trace hit(const Ray& ray) const {
+		return bvh.hit(ray);
+	}
+	// Radiance from the environment along dir (0 without an environment).
+	Spectrum environment_radiance(Vec3 dir) const;
+
+	std::string path; // the file it was loaded from, for messages
+	Camera camera;
+	Render_Settings settings;
+	std::vector<BSDF> materials;
+	std::vector<std::string> material_names;
+	std::vector<Instance> objects; // moved into `bvh` by commit()
+	BVH<Instance> bvh;
+	std::optional<Environment> environment;
+};

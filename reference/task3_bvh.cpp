@@ -1,0 +1,45 @@
+// Task 3: bounding volume hierarchy. Handout: handouts/task3_bvh.md
+#include "bvh.h"
+#include "instance.h"
+#include "tri_mesh.h"
+
+bool BBox::hit(const Ray& ray, Vec2& times) const {
+	// TODO (Task 3, handout §3.1): ray-box slab test.
+	// - For each axis, the ray is between the two planes for t in [(min - o) / d, (max - o) / d]
+	//   (swap the ends when d < 0). Intersect these three intervals with `times`.
+	// - If the result is non-empty, store it in `times` and return true.
+	// - Careful: boxes can be flat (min == max on an axis) and rays can start inside the box.
+	(void)ray, (void)times;
+	return false;
+}
+
+template<typename Primitive> void BVH<Primitive>::build(std::vector<Primitive>&& prims, size_t max_leaf_size) {
+	// TODO (Task 3, handout §3.2): build a BVH with the surface area heuristic (SAH).
+	// For each axis, bin the primitives by centroid into buckets, evaluate the SAH cost of every
+	// split between buckets, and split at the cheapest one; recurse on both halves. Stop at
+	// max_leaf_size primitives, or when no split is cheaper than a leaf.
+	//
+	// This starter version puts every primitive into one leaf, so hit() below tests them all:
+	// correct, but slow for large meshes.
+	(void)max_leaf_size;
+	nodes.clear();
+	primitives = std::move(prims);
+	BBox box;
+	for (const Primitive& p : primitives) box.enclose(p.bbox());
+	root_idx = new_node(box, 0, primitives.size(), 0, 0);
+}
+
+template<typename Primitive> Trace BVH<Primitive>::hit(const Ray& ray) const {
+	// TODO (Task 3, handout §3.3): traverse the tree. Skip nodes whose box the ray misses, visit
+	// the nearer child first, and skip the farther one when its box starts beyond the closest hit
+	// found so far.
+	//
+	// This starter version tests every primitive.
+	Trace ret;
+	for (const Primitive& prim : primitives) ret = Trace::min(ret, prim.hit(ray));
+	return ret;
+}
+
+// The framework builds BVHs of triangles (inside meshes) and of scene objects.
+template class BVH<Triangle>;
+template class BVH<Instance>;

@@ -1,0 +1,41 @@
+// Task 5: materials. Handout: handouts/task5_materials.md
+#include "material.h"
+
+Vec3 reflect(Vec3 dir) {
+	// Not yet written (Task 5 reference arrives with Part II): mirror `dir` about the local normal (0, 1, 0).
+	(void)dir;
+	return Vec3{};
+}
+
+Vec3 refract(Vec3 out_dir, float index_of_refraction, bool& was_internal) {
+	// Not yet written (Task 5 reference arrives with Part II): Snell's law, n_i sin(theta_i) = n_t sin(theta_t).
+	// - out_dir.y > 0: the path is outside (index 1) and continues inside (index_of_refraction);
+	//   out_dir.y < 0: the reverse. The result points to the other side of the surface.
+	// - When cos^2(theta_t) would be negative: total internal reflection. Set was_internal and
+	//   return reflect(out_dir).
+	(void)out_dir, (void)index_of_refraction;
+	was_internal = false;
+	return Vec3{};
+}
+
+float fresnel(float cos_theta, float index_of_refraction) {
+	// Not yet written (Task 5 reference arrives with Part II): the exact unpolarized Fresnel reflectance
+	// F = (r_parallel^2 + r_perpendicular^2) / 2, or Schlick's approximation (see the handout for
+	// the difference the grader allows). cos_theta < 0 means the direction is inside.
+	(void)cos_theta, (void)index_of_refraction;
+	return 0.0f;
+}
+
+Scatter BSDF_Mirror::scatter(RNG& rng, Vec3 out_dir) const {
+	// Not yet written (Task 5 reference arrives with Part II): reflect out_dir; the attenuation is the reflectance.
+	(void)rng, (void)out_dir;
+	return Scatter{Vec3{0.0f, 1.0f, 0.0f}, Spectrum{0.0f}};
+}
+
+Scatter BSDF_Glass::scatter(RNG& rng, Vec3 out_dir) const {
+	// Not yet written (Task 5 reference arrives with Part II): reflect with probability F = fresnel(...), otherwise refract.
+	// Under total internal reflection always reflect. Attenuation: reflectance for a reflection,
+	// transmittance for a refraction (the choice probabilities cancel the Fresnel weights).
+	(void)rng, (void)out_dir;
+	return Scatter{Vec3{0.0f, 1.0f, 0.0f}, Spectrum{0.0f}};
+}
