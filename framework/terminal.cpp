@@ -1,1 +1,0 @@
-// Progress bar (placeholder).
