@@ -2,8 +2,7 @@
 
 #include <type_traits>
 
-// The uniform interface of BSDF over the variant. Each BSDF type implements only what it has;
-// discrete BSDFs have no evaluate/pdf and emissive surfaces do not scatter.
+// The uniform interface of BSDF over the variant. Discrete BSDFs have no evaluate/pdf.
 namespace {
 template<typename T> constexpr bool is_continuous = std::is_same_v<T, BSDF_Lambertian>;
 template<typename T> constexpr bool is_discrete_v =
@@ -11,16 +10,7 @@ template<typename T> constexpr bool is_discrete_v =
 } // namespace
 
 Scatter BSDF::scatter(RNG& rng, Vec3 out_dir) const {
-	return std::visit(
-		[&](const auto& b) -> Scatter {
-			using T = std::decay_t<decltype(b)>;
-			if constexpr (std::is_same_v<T, BSDF_Emissive>) {
-				return Scatter{Vec3{0.0f, 1.0f, 0.0f}, Spectrum{0.0f}};
-			} else {
-				return b.scatter(rng, out_dir);
-			}
-		},
-		bsdf);
+	return std::visit([&](const auto& b) { return b.scatter(rng, out_dir); }, bsdf);
 }
 
 Spectrum BSDF::evaluate(Vec3 out_dir, Vec3 in_dir) const {
@@ -43,19 +33,8 @@ float BSDF::pdf(Vec3 out_dir, Vec3 in_dir) const {
 		bsdf);
 }
 
-Spectrum BSDF::emission(Vec3 out_dir) const {
-	if (auto e = std::get_if<BSDF_Emissive>(&bsdf)) {
-		return out_dir.y > 0.0f ? e->radiance : Spectrum{0.0f};
-	}
-	return Spectrum{0.0f};
-}
-
 bool BSDF::is_discrete() const {
 	return std::visit([](const auto& b) { return is_discrete_v<std::decay_t<decltype(b)>>; }, bsdf);
-}
-
-bool BSDF::is_emissive() const {
-	return std::holds_alternative<BSDF_Emissive>(bsdf);
 }
 
 Spectrum BSDF::albedo() const {
@@ -64,8 +43,7 @@ Spectrum BSDF::albedo() const {
 			using T = std::decay_t<decltype(b)>;
 			if constexpr (std::is_same_v<T, BSDF_Lambertian>) return b.albedo;
 			else if constexpr (std::is_same_v<T, BSDF_Mirror>) return b.reflectance;
-			else if constexpr (std::is_same_v<T, BSDF_Glass>) return b.transmittance;
-			else return b.radiance;
+			else return b.transmittance;
 		},
 		bsdf);
 }

@@ -47,11 +47,6 @@ struct BSDF_Glass {
 	float index_of_refraction = 1.5f;
 };
 
-// A diffuse area light: emits `radiance` from its front side (local +y) and reflects nothing.
-struct BSDF_Emissive {
-	Spectrum radiance{1.0f};
-};
-
 // Task 5: perfect specular reflection of `dir` about the local normal (0, 1, 0).
 Vec3 reflect(Vec3 dir);
 
@@ -65,23 +60,35 @@ Vec3 refract(Vec3 out_dir, float index_of_refraction, bool& was_internal);
 // reflection.
 float fresnel(float cos_theta, float index_of_refraction);
 
-using BSDF_Variant = std::variant<BSDF_Lambertian, BSDF_Mirror, BSDF_Glass, BSDF_Emissive>;
+using BSDF_Variant = std::variant<BSDF_Lambertian, BSDF_Mirror, BSDF_Glass>;
 
-// A material: one of the BSDFs above, with a uniform interface.
+// One of the BSDFs above, with a uniform interface.
 class BSDF {
 public:
 	BSDF() = default;
 	template<typename T> BSDF(T bsdf) : bsdf(std::move(bsdf)) {
 	}
 
-	// Samples in_dir for out_dir. Emissive surfaces absorb: attenuation 0.
 	Scatter scatter(RNG& rng, Vec3 out_dir) const;
 	Spectrum evaluate(Vec3 out_dir, Vec3 in_dir) const; // 0 for discrete BSDFs
 	float pdf(Vec3 out_dir, Vec3 in_dir) const;         // 0 for discrete BSDFs
-	Spectrum emission(Vec3 out_dir) const;              // emitted radiance towards out_dir
 	bool is_discrete() const;                           // mirror or glass
-	bool is_emissive() const;
 	Spectrum albedo() const; // a representative colour, for debug views
 
 	BSDF_Variant bsdf;
+};
+
+// A surface's material: how it scatters light and how much it emits. Any surface may emit; an
+// area light is an object whose material has non-zero emission. Emission is one-sided: radiance
+// `emission` leaves the front side (local +y, the side the normal points to) in every direction.
+struct Material {
+	Spectrum emitted(Vec3 out_dir) const {
+		return out_dir.y > 0.0f ? emission : Spectrum{0.0f};
+	}
+	bool is_emissive() const {
+		return emission != Spectrum{0.0f};
+	}
+
+	BSDF bsdf;
+	Spectrum emission{0.0f};
 };

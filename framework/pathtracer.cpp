@@ -53,10 +53,10 @@ Spectrum Pathtracer::trace(RNG& rng, const Ray& ray) const {
 }
 
 Spectrum Pathtracer::eye_light(const Ray& ray, const Trace& hit) const {
-	const BSDF& bsdf = scene.materials[hit.material];
+	const Material& material = scene.materials[hit.material];
 	Vec3 to_eye = -glm::normalize(ray.dir);
 	float cos_theta = glm::dot(to_eye, hit.normal);
-	return bsdf.albedo() * std::abs(cos_theta) + bsdf.emission(Vec3{0.0f, cos_theta, 0.0f});
+	return material.bsdf.albedo() * std::abs(cos_theta) + material.emitted(Vec3{0.0f, cos_theta, 0.0f});
 }
 
 Spectrum Pathtracer::debug_view(const Ray& ray) const {

@@ -35,7 +35,7 @@ struct Scene {
 	std::string path; // the file it was loaded from, for messages
 	Camera camera;
 	Render_Settings settings;
-	std::vector<BSDF> materials;
+	std::vector<Material> materials;
 	std::vector<std::string> material_names;
 	std::vector<Instance> objects; // moved into `bvh` by commit()
 	BVH<Instance> bvh;

@@ -24,9 +24,11 @@ float BSDF_Lambertian::pdf(Vec3 out_dir, Vec3 in_dir) const {
 
 Spectrum Pathtracer::shade(RNG& rng, const Ray& ray, const Trace& hit) const {
 	// TODO (Task 4, handout §4.2): the path-tracing estimator at a surface hit.
-	// 1. Emitted light: bsdf.emission(out_dir) in the local frame (Frame::from_normal(hit.normal)).
+	// 1. Emitted light: material.emitted(out_dir) in the local frame (Frame::from_normal(hit.normal)),
+	//    where material = scene.materials[hit.material].
 	// 2. If ray.depth has reached settings.max_depth, stop there.
-	// 3. Choose the next direction with sample_incoming(rng, hit, bsdf, out_dir) (task 6 extends it).
+	// 3. Choose the next direction with sample_incoming(rng, hit, material.bsdf, out_dir) (task 6
+	//    extends it).
 	// 4. Trace the new ray with trace(): set its dist_bounds so it cannot hit the surface it leaves,
 	//    and its depth to ray.depth + 1.
 	// 5. Weight the incoming light: attenuation * |cos| / pdf, or just attenuation when the sample
