@@ -74,13 +74,27 @@ Spectrum Pathtracer::debug_view(const Ray& ray) const {
 	}
 }
 
-// Light sampling arrives with Part II (task 6); until then scenes report no lights.
+// Lights for sampling: every emissive object, and the environment. One is chosen uniformly.
+namespace {
+size_t light_count(const Scene& scene) {
+	return scene.area_lights.count() + (scene.environment ? 1 : 0);
+}
+} // namespace
+
 bool Pathtracer::has_lights() const {
-	return false;
+	return light_count(scene) > 0;
 }
-Vec3 Pathtracer::sample_area_lights(RNG&, Vec3) const {
-	return Vec3{0.0f, 1.0f, 0.0f};
+
+Vec3 Pathtracer::sample_area_lights(RNG& rng, Vec3 from) const {
+	uint32_t i = rng.integer(uint32_t(light_count(scene)));
+	if (i < scene.area_lights.count()) return scene.area_lights.sample(i, rng, from);
+	Vec2 u = rng.unit2();
+	return std::visit([&](const auto& env) { return env.sample(u); }, *scene.environment);
 }
-float Pathtracer::area_lights_pdf(Vec3, Vec3) const {
-	return 0.0f;
+
+float Pathtracer::area_lights_pdf(Vec3 from, Vec3 dir) const {
+	float pdf = 0.0f;
+	for (size_t i = 0; i < scene.area_lights.count(); i++) pdf += scene.area_lights.pdf(i, from, dir);
+	if (scene.environment) pdf += std::visit([&](const auto& env) { return env.pdf(dir); }, *scene.environment);
+	return pdf / float(light_count(scene));
 }

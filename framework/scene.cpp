@@ -1,6 +1,7 @@
 #include "scene.h"
 
 void Scene::commit() {
+	area_lights.build(objects, materials);
 	bvh.build(std::move(objects), 1);
 	objects.clear();
 }

@@ -4,6 +4,7 @@
 #include "camera.h"
 #include "env_light.h"
 #include "instance.h"
+#include "lights.h"
 #include "material.h"
 
 #include <optional>
@@ -22,7 +23,8 @@ struct Render_Settings {
 using Environment = std::variant<Env_Constant, Env_Map>;
 
 struct Scene {
-	// Builds the top-level BVH over `objects`; call once after filling them in.
+	// Collects the area lights and builds the top-level BVH over `objects`; call once after
+	// filling them in.
 	void commit();
 
 	// Closest hit of a world-space ray.
@@ -40,4 +42,5 @@ struct Scene {
 	std::vector<Instance> objects; // moved into `bvh` by commit()
 	BVH<Instance> bvh;
 	std::optional<Environment> environment;
+	Area_Lights area_lights; // built by commit()
 };

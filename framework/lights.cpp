@@ -1,0 +1,121 @@
+#include "lights.h"
+#include "error.h"
+
+#include <algorithm>
+
+namespace {
+float triangle_area(const Light_Triangle& t) {
+	return 0.5f * glm::length(glm::cross(t.p1 - t.p0, t.p2 - t.p0));
+}
+
+// Solid-angle density of a point p (unit normal n) chosen with area density 1/area:
+// pdf_omega = dist^2 / (|cos theta_light| * area).
+float area_to_solid_angle(Vec3 from, Vec3 p, Vec3 n, float area) {
+	Vec3 d = p - from;
+	float dist2 = glm::dot(d, d);
+	float cos_light = std::abs(glm::dot(n, d)) / std::sqrt(dist2);
+	float pdf = dist2 / (cos_light * area);
+	return std::isfinite(pdf) ? pdf : 0.0f;
+}
+
+// Möller–Trumbore in double precision: the distance to triangle t along from + s * dir, or -1.
+double triangle_distance(const Light_Triangle& t, Vec3 from, Vec3 dir) {
+	glm::dvec3 e1 = glm::dvec3(t.p1) - glm::dvec3(t.p0), e2 = glm::dvec3(t.p2) - glm::dvec3(t.p0);
+	glm::dvec3 d(dir), s = glm::dvec3(from) - glm::dvec3(t.p0);
+	glm::dvec3 p = glm::cross(d, e2);
+	double det = glm::dot(e1, p);
+	if (det == 0.0) return -1.0;
+	double u = glm::dot(s, p) / det;
+	glm::dvec3 q = glm::cross(s, e1);
+	double v = glm::dot(d, q) / det;
+	double dist = glm::dot(e2, q) / det;
+	return (u >= 0.0 && v >= 0.0 && u + v <= 1.0 && dist > 0.0) ? dist : -1.0;
+}
+
+Area_Light mesh_light(const Tri_Mesh& mesh, const Mat4& to_world) {
+	Area_Light light;
+	for (const Triangle& tri : mesh.bvh.primitives) {
+		Light_Triangle t{transform_point(to_world, tri.v0.position), transform_point(to_world, tri.v1.position),
+		                 transform_point(to_world, tri.v2.position)};
+		float area = triangle_area(t);
+		if (!(area > 0.0f)) continue; // zero-area triangles emit nothing
+		light.triangles.push_back(t);
+		light.area += area;
+		light.cdf.push_back(light.area);
+	}
+	return light;
+}
+
+Area_Light sphere_light(const Sphere& sphere, const Mat4& to_world, uint32_t object) {
+	Vec3 sx = transform_direction(to_world, Vec3{1, 0, 0}), sy = transform_direction(to_world, Vec3{0, 1, 0}),
+	     sz = transform_direction(to_world, Vec3{0, 0, 1});
+	float scale = glm::length(sx);
+	auto close = [&](float s) { return std::abs(s - scale) <= 1e-4f * scale; };
+	if (!close(glm::length(sy)) || !close(glm::length(sz))) {
+		throw Input_Error("objects[" + std::to_string(object) +
+		                  "]: an emissive sphere must be scaled uniformly (found a non-uniform scale)");
+	}
+	Area_Light light;
+	light.center = transform_point(to_world, Vec3{0.0f});
+	light.radius = sphere.radius * scale;
+	light.area = 4.0f * PI_F * light.radius * light.radius;
+	return light;
+}
+} // namespace
+
+void Area_Lights::build(const std::vector<Instance>& objects, const std::vector<Material>& materials) {
+	lights.clear();
+	for (const Instance& object : objects) {
+		if (!materials.at(object.material).is_emissive()) continue;
+		Area_Light light = std::holds_alternative<Tri_Mesh>(object.shape)
+		                       ? mesh_light(std::get<Tri_Mesh>(object.shape), object.to_world)
+		                       : sphere_light(std::get<Sphere>(object.shape), object.to_world, object.index);
+		if (light.area > 0.0f && std::isfinite(light.area)) lights.push_back(std::move(light));
+	}
+}
+
+Vec3 Area_Lights::sample(size_t i, RNG& rng, Vec3 from) const {
+	const Area_Light& light = lights[i];
+	Vec3 point;
+	if (light.triangles.empty()) {
+		// Uniform point on the sphere: z = 1 - 2u, phi = 2 pi v.
+		Vec2 u = rng.unit2();
+		float z = 1.0f - 2.0f * u.x, r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 2.0f * PI_F * u.y;
+		point = light.center + light.radius * Vec3{r * std::cos(phi), r * std::sin(phi), z};
+	} else {
+		// A triangle with probability proportional to its area, then a uniform point on it
+		// (square-root parametrization: b0 = 1 - sqrt(u1), b1 = u2 sqrt(u1)).
+		float target = rng.unit() * light.area;
+		size_t t = size_t(std::upper_bound(light.cdf.begin(), light.cdf.end(), target) - light.cdf.begin());
+		const Light_Triangle& tri = light.triangles[std::min(t, light.triangles.size() - 1)];
+		Vec2 u = rng.unit2();
+		float su = std::sqrt(u.x), b0 = 1.0f - su, b1 = u.y * su;
+		point = b0 * tri.p0 + b1 * tri.p1 + (1.0f - b0 - b1) * tri.p2;
+	}
+	return glm::normalize(point - from);
+}
+
+float Area_Lights::pdf(size_t i, Vec3 from, Vec3 dir) const {
+	const Area_Light& light = lights[i];
+	float pdf = 0.0f;
+	if (light.triangles.empty()) {
+		// Both crossings of the sphere |from + s dir - c| = r (dir is unit).
+		glm::dvec3 f = glm::dvec3(from) - glm::dvec3(light.center), d(dir);
+		double b = glm::dot(f, d), c = glm::dot(f, f) - double(light.radius) * light.radius;
+		double disc = b * b - c;
+		if (!(disc > 0.0)) return 0.0f;
+		for (double s : {-b - std::sqrt(disc), -b + std::sqrt(disc)}) {
+			if (s <= 0.0) continue;
+			Vec3 p = from + float(s) * dir;
+			pdf += area_to_solid_angle(from, p, glm::normalize(p - light.center), light.area);
+		}
+		return pdf;
+	}
+	for (const Light_Triangle& tri : light.triangles) {
+		double s = triangle_distance(tri, from, dir);
+		if (s <= 0.0) continue;
+		Vec3 n = glm::normalize(glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0));
+		pdf += area_to_solid_angle(from, from + float(s) * dir, n, light.area);
+	}
+	return pdf;
+}
