@@ -82,9 +82,7 @@ public:
 // area light is an object whose material has non-zero emission. Emission is one-sided: radiance
 // `emission` leaves the front side (local +y, the side the normal points to) in every direction.
 struct Material {
-	Spectrum emitted(Vec3 out_dir) const {
-		return out_dir.y > 0.0f ? emission : Spectrum{0.0f};
-	}
+	Spectrum emitted(Vec3 out_dir) const; // emission if out_dir.y > 0, else 0
 	bool is_emissive() const {
 		return emission != Spectrum{0.0f};
 	}

@@ -1,6 +1,7 @@
 #include "pathtracer.h"
 #include "bvh_visits.h"
 #include "frame.h"
+#include "lifecycle.h"
 
 #include <array>
 
@@ -46,10 +47,18 @@ Pathtracer::Pathtracer(const Scene& scene_, Render_Settings settings_, View view
 }
 
 Spectrum Pathtracer::trace(RNG& rng, const Ray& ray) const {
-	if (view != View::path) return debug_view(ray);
-	Trace hit = scene.hit(ray);
-	if (!hit.hit) return scene.environment_radiance(ray.dir);
-	return shade(rng, ray, hit);
+	Lifecycle_Recorder* recorder = Lifecycle_Recorder::active();
+	if (recorder) recorder->begin_ray(ray);
+	Spectrum radiance{0.0f};
+	if (view != View::path) {
+		radiance = debug_view(ray);
+	} else {
+		Trace hit = scene.hit(ray);
+		if (recorder) recorder->set_hit(hit);
+		radiance = hit.hit ? shade(rng, ray, hit) : scene.environment_radiance(ray.dir);
+	}
+	if (recorder) recorder->end_ray(radiance);
+	return radiance;
 }
 
 Spectrum Pathtracer::eye_light(const Ray& ray, const Trace& hit) const {
@@ -87,14 +96,28 @@ bool Pathtracer::has_lights() const {
 
 Vec3 Pathtracer::sample_area_lights(RNG& rng, Vec3 from) const {
 	uint32_t i = rng.integer(uint32_t(light_count(scene)));
-	if (i < scene.area_lights.count()) return scene.area_lights.sample(i, rng, from);
-	Vec2 u = rng.unit2();
-	return std::visit([&](const auto& env) { return env.sample(u); }, *scene.environment);
+	Vec3 dir;
+	if (i < scene.area_lights.count()) {
+		dir = scene.area_lights.sample(i, rng, from);
+	} else {
+		Vec2 u = rng.unit2();
+		dir = std::visit([&](const auto& env) { return env.sample(u); }, *scene.environment);
+	}
+	if (auto recorder = Lifecycle_Recorder::active()) {
+		bool env = i >= scene.area_lights.count();
+		recorder->event("light sample (" + (env ? std::string("environment") : "area light " + std::to_string(i)) +
+		                "): direction " + format_vec(dir));
+	}
+	return dir;
 }
 
 float Pathtracer::area_lights_pdf(Vec3 from, Vec3 dir) const {
 	float pdf = 0.0f;
 	for (size_t i = 0; i < scene.area_lights.count(); i++) pdf += scene.area_lights.pdf(i, from, dir);
 	if (scene.environment) pdf += std::visit([&](const auto& env) { return env.pdf(dir); }, *scene.environment);
-	return pdf / float(light_count(scene));
+	pdf /= float(light_count(scene));
+	if (auto recorder = Lifecycle_Recorder::active()) {
+		recorder->event("area_lights_pdf of direction " + format_vec(dir) + " = " + std::to_string(pdf));
+	}
+	return pdf;
 }

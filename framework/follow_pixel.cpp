@@ -1,0 +1,16 @@
+#include "follow_pixel.h"
+#include "lifecycle.h"
+
+void follow_pixel(const Pathtracer& pathtracer, uint32_t x, uint32_t y, uint32_t samples, std::ostream& out) {
+	const Render_Settings& settings = pathtracer.settings;
+	size_t index = size_t(y) * settings.width + x;
+	out << "pixel (" << x << ", " << y << "), seed " << settings.seed << ", view " << view_name(pathtracer.view)
+	    << ", max_depth " << settings.max_depth << "\n";
+	Lifecycle_Recorder recorder;
+	for (uint32_t s = 0; s < samples; s++) {
+		RNG rng = RNG::for_sample(settings.seed, index, s); // the same generator render() uses
+		pathtracer.trace_pixel(x, y, rng);
+		out << "sample " << s << ": ";
+		recorder.print(out, pathtracer.scene.material_names);
+	}
+}

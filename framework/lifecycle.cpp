@@ -1,0 +1,112 @@
+#include "lifecycle.h"
+
+#include <cstdio>
+
+namespace {
+thread_local Lifecycle_Recorder* active_recorder = nullptr;
+
+std::string format_bounds(Vec2 b) {
+	char buffer[64];
+	std::snprintf(buffer, sizeof buffer, "[%.6g, %.6g]", b.x, b.y);
+	return buffer;
+}
+
+// The weight w the estimator applied to the light returned by `child`, per channel, from
+// L_parent = L_emitted + w * L_child (a one-sample estimator). Channels where no light came back
+// give no information and are shown as '?'.
+std::string format_weight(const Lifecycle_Ray& parent, const Lifecycle_Ray& child, Spectrum& throughput) {
+	std::string text = "(";
+	for (int c = 0; c < 3; c++) {
+		char buffer[32];
+		float reflected = parent.radiance[c] - parent.emitted[c];
+		if (child.radiance[c] != 0.0f) {
+			float w = reflected / child.radiance[c];
+			throughput[c] *= w;
+			std::snprintf(buffer, sizeof buffer, "%.6g", w);
+		} else {
+			std::snprintf(buffer, sizeof buffer, "?");
+		}
+		text += buffer;
+		text += c < 2 ? ", " : ")";
+	}
+	return text;
+}
+
+void print_ray(std::ostream& out, const Lifecycle_Ray& node, const std::vector<std::string>& names,
+               Spectrum throughput, const std::string& indent) {
+	out << indent << "ray depth " << node.ray.depth << ": origin " << format_vec(node.ray.point) << " dir "
+	    << format_vec(node.ray.dir) << " dist_bounds " << format_bounds(node.ray.dist_bounds) << "\n";
+	out << indent << "  throughput " << format_vec(throughput) << "\n";
+	if (node.hit.hit) {
+		std::string name = node.hit.material < names.size() ? names[node.hit.material] : "?";
+		out << indent << "  hit object " << node.hit.object << " (material '" << name << "') at distance "
+		    << node.hit.distance << ", position " << format_vec(node.hit.position) << ", normal "
+		    << format_vec(node.hit.normal) << "\n";
+	} else {
+		out << indent << "  missed the scene (environment)\n";
+	}
+	for (const std::string& e : node.events) out << indent << "  " << e << "\n";
+	for (const auto& child : node.children) {
+		Spectrum child_throughput = throughput;
+		out << indent << "  weight applied to the next ray's light: "
+		    << format_weight(node, *child, child_throughput) << "\n";
+		print_ray(out, *child, names, child_throughput, indent + "  ");
+	}
+	out << indent << "  radiance returned " << format_vec(node.radiance) << " (emitted here "
+	    << format_vec(node.emitted) << ", added to the pixel " << format_vec(throughput * node.emitted) << ")\n";
+}
+} // namespace
+
+std::string format_vec(Vec3 v) {
+	char buffer[96];
+	std::snprintf(buffer, sizeof buffer, "(%.6g, %.6g, %.6g)", v.x, v.y, v.z);
+	return buffer;
+}
+
+Lifecycle_Recorder::Lifecycle_Recorder() : previous(active_recorder) {
+	active_recorder = this;
+}
+
+Lifecycle_Recorder::~Lifecycle_Recorder() {
+	active_recorder = previous;
+}
+
+Lifecycle_Recorder* Lifecycle_Recorder::active() {
+	return active_recorder;
+}
+
+void Lifecycle_Recorder::begin_ray(const Ray& ray) {
+	auto node = std::make_unique<Lifecycle_Ray>();
+	node->ray = ray;
+	node->parent = current;
+	Lifecycle_Ray* raw = node.get();
+	(current ? current->children : roots).push_back(std::move(node));
+	current = raw;
+}
+
+void Lifecycle_Recorder::set_hit(const Trace& hit) {
+	if (current) current->hit = hit;
+}
+
+void Lifecycle_Recorder::end_ray(Spectrum radiance) {
+	if (!current) return;
+	current->radiance = radiance;
+	current = current->parent;
+}
+
+void Lifecycle_Recorder::event(std::string text) {
+	if (current) current->events.push_back(std::move(text));
+}
+
+void Lifecycle_Recorder::emitted(Spectrum radiance) {
+	if (current) current->emitted += radiance;
+}
+
+void Lifecycle_Recorder::print(std::ostream& out, const std::vector<std::string>& material_names) {
+	for (const auto& root : roots) {
+		out << "value " << format_vec(root->radiance) << "\n";
+		print_ray(out, *root, material_names, Spectrum{1.0f}, "  ");
+	}
+	roots.clear();
+	current = nullptr;
+}
