@@ -1,5 +1,6 @@
 #include "lifecycle.h"
 
+#include <cmath>
 #include <cstdio>
 
 namespace {
@@ -9,6 +10,18 @@ std::string format_bounds(Vec2 b) {
 	char buffer[64];
 	std::snprintf(buffer, sizeof buffer, "[%.6g, %.6g]", b.x, b.y);
 	return buffer;
+}
+
+// A vector whose unknown (NaN) components print as '?'.
+std::string format_known(Vec3 v) {
+	std::string text = "(";
+	for (int c = 0; c < 3; c++) {
+		char buffer[32];
+		std::snprintf(buffer, sizeof buffer, "%.6g", v[c]);
+		text += std::isnan(v[c]) ? "?" : buffer;
+		text += c < 2 ? ", " : ")";
+	}
+	return text;
 }
 
 // The weight w the estimator applied to the light returned by `child`, per channel, from
@@ -24,6 +37,7 @@ std::string format_weight(const Lifecycle_Ray& parent, const Lifecycle_Ray& chil
 			throughput[c] *= w;
 			std::snprintf(buffer, sizeof buffer, "%.6g", w);
 		} else {
+			throughput[c] = NAN; // unknown from here on
 			std::snprintf(buffer, sizeof buffer, "?");
 		}
 		text += buffer;
@@ -36,7 +50,7 @@ void print_ray(std::ostream& out, const Lifecycle_Ray& node, const std::vector<s
                Spectrum throughput, const std::string& indent) {
 	out << indent << "ray depth " << node.ray.depth << ": origin " << format_vec(node.ray.point) << " dir "
 	    << format_vec(node.ray.dir) << " dist_bounds " << format_bounds(node.ray.dist_bounds) << "\n";
-	out << indent << "  throughput " << format_vec(throughput) << "\n";
+	out << indent << "  throughput " << format_known(throughput) << "\n";
 	if (node.hit.hit) {
 		std::string name = node.hit.material < names.size() ? names[node.hit.material] : "?";
 		out << indent << "  hit object " << node.hit.object << " (material '" << name << "') at distance "
@@ -53,7 +67,7 @@ void print_ray(std::ostream& out, const Lifecycle_Ray& node, const std::vector<s
 		print_ray(out, *child, names, child_throughput, indent + "  ");
 	}
 	out << indent << "  radiance returned " << format_vec(node.radiance) << " (emitted here "
-	    << format_vec(node.emitted) << ", added to the pixel " << format_vec(throughput * node.emitted) << ")\n";
+	    << format_vec(node.emitted) << ", added to the pixel " << format_known(throughput * node.emitted) << ")\n";
 }
 } // namespace
 

@@ -1,14 +1,10 @@
-#include "error.h"
-#include "scene_loader.h"
+// The renderer's program: pathtracer_reference / pathtracer_student (see framework/cli.h).
+#include "cli.h"
+#include "terminal.h"
 
-#include <cstdio>
+#include <iostream>
 
 int main(int argc, char** argv) {
-	if (argc < 2) return 2;
-	try {
-		Scene scene = load_scene(argv[1]);
-	} catch (const Input_Error& e) {
-		std::fprintf(stderr, "error: %s\n", e.what());
-		return 1;
-	}
+	std::vector<std::string> args(argv, argv + argc);
+	return run_cli(args, std::cout, std::cerr, stderr_is_terminal());
 }

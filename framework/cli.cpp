@@ -1,0 +1,118 @@
+#include "cli.h"
+#include "cli_options.h"
+#include "error.h"
+#include "follow_pixel.h"
+#include "image_io.h"
+#include "render.h"
+#include "scene_loader.h"
+#include "terminal.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <ostream>
+
+namespace {
+
+// 1234567 -> "1.2 M"
+std::string with_unit(double value) {
+	const char* units[] = {"", " k", " M", " G"};
+	int i = 0;
+	for (; value >= 1000.0 && i < 3; i++) value /= 1000.0;
+	char text[32];
+	std::snprintf(text, sizeof text, "%.1f%s", value, units[i]);
+	return text;
+}
+
+// Writes every requested image and returns their paths.
+std::vector<std::string> write_outputs(const Film& film, const Cli_Options& options) {
+	std::vector<std::string> written;
+	auto write = [&](const std::string& path, auto&& writer) {
+		if (path.empty()) return;
+		writer(path);
+		written.push_back(path);
+	};
+	write(options.png, [&](const std::string& path) { write_png(path, film.mean(), options.exposure); });
+	write(options.exr, [&](const std::string& path) { write_exr(path, film.mean()); });
+	write(options.variance, [&](const std::string& path) { write_exr(path, film.variance()); });
+	write(options.nan_map, [&](const std::string& path) { write_png(path, film.non_finite_map()); });
+	return written;
+}
+
+void warn_non_finite(const Film& film, const Cli_Options& options, std::ostream& err) {
+	size_t pixels = size_t(std::count_if(film.pixels.begin(), film.pixels.end(),
+	                                     [](const Pixel_Stats& p) { return p.non_finite > 0; }));
+	err << "warning: " << film.non_finite() << " samples in " << pixels
+	    << " pixels were NaN or infinite; they are left out of the image. ";
+	if (options.nan_map.empty()) {
+		err << "See where they are with --nan-map FILE.png.\n";
+	} else {
+		err << "They are marked white in " << options.nan_map << ".\n";
+	}
+}
+
+void report(const Film& film, const Render_Settings& settings, View view, double seconds,
+            const std::vector<std::string>& written, std::ostream& out) {
+	for (const std::string& path : written) out << "wrote " << path << "\n";
+	double samples = double(settings.width) * settings.height * settings.samples;
+	char time[32];
+	std::snprintf(time, sizeof time, "%.3f s", seconds);
+	out << "rendered " << settings.width << " x " << settings.height << " pixels, " << settings.samples
+	    << (settings.samples == 1 ? " sample" : " samples") << " each, view " << view_name(view) << ", in " << time
+	    << "\n";
+	out << "speed: " << with_unit(samples / std::max(seconds, 1e-9)) << " samples/s\n";
+	out << "non-finite samples: " << film.non_finite() << "\n";
+}
+
+void render_and_write(const Scene& scene, const Cli_Options& options, std::ostream& out, std::ostream& err,
+                      bool err_is_terminal) {
+	Pathtracer pathtracer(scene, override_settings(scene.settings, options), options.view);
+	Progress_Bar progress_bar(err, err_is_terminal && !options.quiet);
+	Render_Options render_options;
+	render_options.threads = options.threads;
+	render_options.progress = [&](size_t done, size_t total) { progress_bar.update(done, total); };
+
+	auto start = std::chrono::steady_clock::now();
+	Film film = render(pathtracer, render_options);
+	double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+	progress_bar.finish();
+
+	std::vector<std::string> written = write_outputs(film, options);
+	if (!options.quiet) report(film, pathtracer.settings, options.view, seconds, written, out);
+	if (film.non_finite() > 0) warn_non_finite(film, options, err);
+}
+
+// --follow-pixel: the same paths the renderer takes for that pixel, printed ray by ray.
+void follow(const Scene& scene, const Cli_Options& options, std::ostream& out) {
+	Pathtracer pathtracer(scene, override_settings(scene.settings, options), options.view);
+	auto [x, y] = *options.follow_pixel;
+	if (x >= pathtracer.settings.width || y >= pathtracer.settings.height) {
+		throw Input_Error("--follow-pixel: pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+		                  ") is outside the " + std::to_string(pathtracer.settings.width) + " x " +
+		                  std::to_string(pathtracer.settings.height) + " image");
+	}
+	follow_pixel(pathtracer, x, y, std::min(options.follow_samples, pathtracer.settings.samples), out);
+}
+
+} // namespace
+
+int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err, bool err_is_terminal) {
+	try {
+		if (wants_help(args)) {
+			out << cli_usage(args);
+			return 0;
+		}
+		Cli_Options options = parse_cli_options(args);
+		Scene scene = load_scene(options.scene);
+		if (options.follow_pixel) {
+			follow(scene, options, out);
+		} else {
+			render_and_write(scene, options, out, err, err_is_terminal);
+		}
+		return 0;
+	} catch (const std::exception& e) {
+		// Input_Error from the options, the scene or an image file; std::bad_alloc for a film too large.
+		err << "error: " << e.what() << "\n";
+		return 1;
+	}
+}

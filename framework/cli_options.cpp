@@ -1,0 +1,219 @@
+#include "cli_options.h"
+#include "error.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+
+namespace {
+
+// ---- Values -------------------------------------------------------------------------------------
+
+template<typename T> T whole_number(const std::string& option, const std::string& text, T min, T max) {
+	T value{};
+	const char* end = text.data() + text.size();
+	auto [stop, status] = std::from_chars(text.data(), end, value);
+	if (status != std::errc() || stop != end || value < min || value > max) {
+		throw Input_Error(option + ": expected a whole number from " + std::to_string(min) + " to " +
+		                  std::to_string(max) + ", got '" + text + "'");
+	}
+	return value;
+}
+
+float stops(const std::string& option, const std::string& text) {
+	constexpr float LIMIT = 64.0f; // 2^64 is far beyond any useful exposure
+	float value = 0.0f;
+	const char* end = text.data() + text.size();
+	auto [stop, status] = std::from_chars(text.data(), end, value);
+	if (status != std::errc() || stop != end || !(std::abs(value) <= LIMIT)) {
+		throw Input_Error(option + ": expected a number of stops from -64 to 64, got '" + text + "'");
+	}
+	return value;
+}
+
+std::string lowercase(std::string text) {
+	std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+	return text;
+}
+
+// An output file name with the extension its format needs.
+std::string output_file(const std::string& option, const std::string& path, const std::string& extension) {
+	if (lowercase(std::filesystem::path(path).extension().string()) != extension) {
+		throw Input_Error(option + ": the file name must end in " + extension + ", got '" + path + "'");
+	}
+	return path;
+}
+
+// "X,Y" as two whole numbers.
+std::pair<uint32_t, uint32_t> pixel(const std::string& option, const std::string& text) {
+	size_t comma = text.find(',');
+	if (comma == std::string::npos) throw Input_Error(option + ": expected a pixel X,Y (e.g. 128,40), got '" + text + "'");
+	return {whole_number<uint32_t>(option + " X", text.substr(0, comma), 0, 16383),
+	        whole_number<uint32_t>(option + " Y", text.substr(comma + 1), 0, 16383)};
+}
+
+View view_named(const std::string& option, const std::string& name) {
+	View view;
+	if (!parse_view(name, view)) {
+		throw Input_Error(option + ": unknown view '" + name + "' (expected path, eye, normals, bvh or direction)");
+	}
+	return view;
+}
+
+// ---- The options: one table for parsing and for --help ------------------------------------------
+
+struct Option {
+	const char* name;
+	const char* value; // placeholder shown in --help; nullptr for a flag without value
+	const char* help;
+	// Stores the value; `name` is the option's name, for error messages.
+	std::function<void(Cli_Options& o, const std::string& name, const std::string& value)> set;
+};
+
+const std::vector<Option>& option_table() {
+	static const std::vector<Option> table{
+		{"--out", "FILE.png", "the image to look at: exposure, sRGB, 8 bits (default out/<scene name>.png)",
+		 [](auto& o, auto& name, auto& v) { o.png = output_file(name, v, ".png"); }},
+		{"--exr", "FILE.exr", "also write the linear image (the per-pixel mean) as 32-bit floats",
+		 [](auto& o, auto& name, auto& v) { o.exr = output_file(name, v, ".exr"); }},
+		{"--variance", "FILE.exr", "also write the per-pixel sample variance s^2 (the mean's is s^2 / spp)",
+		 [](auto& o, auto& name, auto& v) { o.variance = output_file(name, v, ".exr"); }},
+		{"--nan-map", "FILE.png", "also write a map of the pixels that had NaN or infinite samples (white)",
+		 [](auto& o, auto& name, auto& v) { o.nan_map = output_file(name, v, ".png"); }},
+		{"--spp", "N", "samples per pixel, 1 to 1000000",
+		 [](auto& o, auto& name, auto& v) { o.samples = whole_number<uint32_t>(name, v, 1, 1000000); }},
+		{"--width", "W", "image width in pixels, 1 to 16384",
+		 [](auto& o, auto& name, auto& v) { o.width = whole_number<uint32_t>(name, v, 1, 16384); }},
+		{"--height", "H", "image height in pixels, 1 to 16384",
+		 [](auto& o, auto& name, auto& v) { o.height = whole_number<uint32_t>(name, v, 1, 16384); }},
+		{"--max-depth", "D", "maximum number of bounces, 0 to 1000 (0: emitters only, 1: direct light)",
+		 [](auto& o, auto& name, auto& v) { o.max_depth = whole_number<uint32_t>(name, v, 0, 1000); }},
+		{"--seed", "S", "random seed, a whole number >= 0; the same seed gives the same image",
+		 [](auto& o, auto& name, auto& v) { o.seed = whole_number<uint64_t>(name, v, 0, UINT64_MAX); }},
+		{"--threads", "T", "render threads, 0 to 1024 (0 = all cores; the image does not depend on it)",
+		 [](auto& o, auto& name, auto& v) { o.threads = whole_number<uint32_t>(name, v, 0, 1024); }},
+		{"--view", "VIEW", "what to show (see views below; default path)",
+		 [](auto& o, auto& name, auto& v) { o.view = view_named(name, v); }},
+		{"--exposure", "STOPS", "brighten (> 0) or darken (< 0) the PNG by 2^STOPS (default 0)",
+		 [](auto& o, auto& name, auto& v) { o.exposure = stops(name, v); }},
+		{"--follow-pixel", "X,Y",
+		 "instead of an image, print the life of every ray of pixel (X, Y)'s samples: what each ray hit, the "
+		 "BSDF and light samples, the weights and the radiance (pixel (0, 0) is the top-left)",
+		 [](auto& o, auto& name, auto& v) { o.follow_pixel = pixel(name, v); }},
+		{"--follow-samples", "N", "how many of that pixel's samples --follow-pixel prints, 1 to 1000 (default 1)",
+		 [](auto& o, auto& name, auto& v) { o.follow_samples = whole_number<uint32_t>(name, v, 1, 1000); }},
+		{"--quiet", nullptr, "no progress bar and no summary (errors and warnings are still printed)",
+		 [](auto& o, auto&, auto&) { o.quiet = true; }},
+		{"--help", nullptr, "print this help and exit", [](auto&, auto&, auto&) {}},
+	};
+	return table;
+}
+
+const Option* find_option(const std::string& name) {
+	for (const Option& option : option_table()) {
+		if (name == option.name) return &option;
+	}
+	return nullptr;
+}
+
+std::string program_name(const std::vector<std::string>& args) {
+	return args.empty() ? "pathtracer" : std::filesystem::path(args[0]).filename().string();
+}
+
+std::string usage(const std::string& program) {
+	std::string text = "usage: " + program + " SCENE.json [options]\n\n"
+	                   "Renders a scene (format: scenes/README.md) and writes a PNG image. The options\n"
+	                   "override the scene's settings for this run only. Values follow the option,\n"
+	                   "as in --spp 64 or --spp=64.\n\noptions:\n";
+	for (const Option& option : option_table()) {
+		std::string head = std::string(option.name) + (option.value ? std::string(" ") + option.value : "");
+		head.resize(std::max<size_t>(head.size() + 2, 22), ' ');
+		text += "  " + head + option.help + "\n";
+	}
+	text += "\nviews (--view):\n"
+	        "  path       the Monte Carlo path tracer (tasks 4 to 7)\n"
+	        "  eye        light from the eye: albedo * |cos| at the first hit, plus emission\n"
+	        "  normals    the first hit's normal n as colour (n + 1) / 2\n"
+	        "  bvh        BVH nodes visited per camera ray as a heat map (black: none, white: 64+)\n"
+	        "  direction  the camera ray's direction d as colour (d + 1) / 2\n"
+	        "The debug views need tasks 1 to 3 only.\n\n"
+	        "Exit status 0 on success, 1 on any error; bad input writes no file.\n";
+	return text;
+}
+
+// ---- Parsing ------------------------------------------------------------------------------------
+
+// "--name value" or "--name=value".
+void apply_option(const std::vector<std::string>& args, size_t& i, Cli_Options& options) {
+	const std::string& arg = args[i];
+	size_t equals = arg.find('=');
+	std::string name = arg.substr(0, equals);
+	const Option* option = find_option(name);
+	if (!option) throw Input_Error("unknown option '" + name + "' (see --help)");
+	if (!option->value) {
+		if (equals != std::string::npos) throw Input_Error(name + " takes no value, got '" + arg + "'");
+		option->set(options, name, "");
+		return;
+	}
+	if (equals != std::string::npos) {
+		option->set(options, name, arg.substr(equals + 1));
+		return;
+	}
+	bool has_value = i + 1 < args.size() && args[i + 1].rfind("--", 0) != 0;
+	if (!has_value) throw Input_Error(name + ": missing value (" + name + " " + option->value + ")");
+	option->set(options, name, args[++i]);
+}
+
+// Two outputs in one file would silently overwrite each other.
+void require_distinct_outputs(const Cli_Options& options) {
+	std::vector<std::string> outputs{options.png, options.exr, options.variance, options.nan_map};
+	std::sort(outputs.begin(), outputs.end());
+	for (size_t i = 1; i < outputs.size(); i++) {
+		if (!outputs[i].empty() && outputs[i] == outputs[i - 1]) {
+			throw Input_Error(outputs[i] + ": the same file is given for two outputs");
+		}
+	}
+}
+
+} // namespace
+
+Cli_Options parse_cli_options(const std::vector<std::string>& args) {
+	Cli_Options options;
+	for (size_t i = 1; i < args.size(); i++) {
+		const std::string& arg = args[i];
+		if (arg.size() > 1 && arg[0] == '-') {
+			apply_option(args, i, options);
+		} else if (options.scene.empty()) {
+			options.scene = arg;
+		} else {
+			throw Input_Error("unexpected argument '" + arg + "': give one scene file (see --help)");
+		}
+	}
+	if (options.scene.empty()) {
+		throw Input_Error("no scene file given (usage: " + program_name(args) + " SCENE.json [options])");
+	}
+	if (options.png.empty()) options.png = "out/" + std::filesystem::path(options.scene).stem().string() + ".png";
+
+	require_distinct_outputs(options);
+	return options;
+}
+
+Render_Settings override_settings(Render_Settings settings, const Cli_Options& options) {
+	settings.samples = options.samples.value_or(settings.samples);
+	settings.width = options.width.value_or(settings.width);
+	settings.height = options.height.value_or(settings.height);
+	settings.max_depth = options.max_depth.value_or(settings.max_depth);
+	settings.seed = options.seed.value_or(settings.seed);
+	return settings;
+}
+
+bool wants_help(const std::vector<std::string>& args) {
+	return std::find(args.begin() + std::min<size_t>(1, args.size()), args.end(), "--help") != args.end();
+}
+
+std::string cli_usage(const std::vector<std::string>& args) {
+	return usage(program_name(args));
+}

@@ -1,0 +1,33 @@
+#pragma once
+// The renderer's command-line options (see cli.h): parsing with one clear error per mistake, and
+// the --help text, both from one table so they cannot disagree.
+#include "pathtracer.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+// What the command line asks for. Unset optionals keep the scene's own settings.
+struct Cli_Options {
+	std::string scene;
+	std::string png, exr, variance, nan_map; // output files; png defaults to out/<scene stem>.png
+	std::optional<uint32_t> samples, width, height, max_depth;
+	std::optional<uint64_t> seed;
+	uint32_t threads = 0; // 0 = all hardware threads
+	View view = View::path;
+	float exposure = 0.0f; // stops, for the PNG
+	bool quiet = false;
+	// --follow-pixel X,Y: print the life of that pixel's rays instead of rendering an image.
+	std::optional<std::pair<uint32_t, uint32_t>> follow_pixel;
+	uint32_t follow_samples = 1;
+};
+
+// args as in argv (args[0] is the program name). Throws Input_Error naming the bad option/value.
+Cli_Options parse_cli_options(const std::vector<std::string>& args);
+
+// The scene's settings with the command line's overrides.
+Render_Settings override_settings(Render_Settings settings, const Cli_Options& options);
+
+// --help: whether it was asked for, and the text.
+bool wants_help(const std::vector<std::string>& args);
+std::string cli_usage(const std::vector<std::string>& args);

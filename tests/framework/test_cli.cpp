@@ -1,0 +1,297 @@
+// The renderer's command line (framework/cli.h) and its progress bar (framework/terminal.h):
+// --help explains everything, bad input gives one "error:" line and writes nothing, a render
+// writes the images it reports.
+#include "cli.h"
+#include "image_io.h"
+#include "temp_dir.h"
+#include "terminal.h"
+
+#include <catch2/catch.hpp>
+#include <stb/stb_image.h>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A small scene (format: scenes/README.md): a grey sphere in front of the camera under a white
+// sky, film 16 x 12.
+const char* const SPHERE_SCENE = R"({
+	"camera": {"position": [0, 0, 3], "target": [0, 0, 0], "up": [0, 1, 0], "vertical_fov": 50},
+	"film": {"width": 16, "height": 12, "samples": 2, "max_depth": 3, "seed": 1},
+	"materials": {"grey": {"type": "lambertian", "albedo": [0.6, 0.6, 0.6]}},
+	"objects": [{"type": "sphere", "radius": 1, "material": "grey"}],
+	"environment": {"type": "constant", "radiance": [1, 1, 1]}
+})";
+
+// Runs the tests of this file inside a fresh directory, so that default outputs (out/...) land
+// there and can be seen; restores the working directory afterwards.
+class In_Temp_Dir {
+public:
+	In_Temp_Dir() : previous(fs::current_path()) {
+		fs::current_path(dir.path());
+		std::ofstream("sphere.json") << SPHERE_SCENE;
+		std::ofstream("broken.json") << "{ \"camera\": ";
+	}
+	~In_Temp_Dir() {
+		fs::current_path(previous);
+	}
+
+	// Every file below the directory, apart from the two scenes written above.
+	std::vector<std::string> new_files() const {
+		std::vector<std::string> files;
+		for (const auto& entry : fs::recursive_directory_iterator(dir.path())) {
+			std::string name = fs::relative(entry.path(), dir.path()).string();
+			if (name != "sphere.json" && name != "broken.json") files.push_back(name);
+		}
+		return files;
+	}
+
+private:
+	Temp_Dir dir;
+	fs::path previous;
+};
+
+struct Run {
+	int status = 0;
+	std::string out, err;
+};
+
+// The program with `args` after its name.
+Run run(std::vector<std::string> args, bool err_is_terminal = false) {
+	args.insert(args.begin(), "pathtracer_reference");
+	std::ostringstream out, err;
+	Run result;
+	result.status = run_cli(args, out, err, err_is_terminal);
+	result.out = out.str();
+	result.err = err.str();
+	return result;
+}
+
+std::string joined(const std::vector<std::string>& args) {
+	std::string text;
+	for (const std::string& a : args) text += (text.empty() ? "" : " ") + a;
+	return text;
+}
+
+bool any_nonzero(const HDR_Image& image) {
+	return std::any_of(image.pixels.begin(), image.pixels.end(), [](Spectrum p) { return p != Spectrum{0.0f}; });
+}
+
+// Decoded 8-bit RGB of a PNG.
+std::vector<uint8_t> png_bytes(const std::string& path) {
+	int w = 0, h = 0, channels = 0;
+	uint8_t* data = stbi_load(path.c_str(), &w, &h, &channels, 3);
+	REQUIRE(data != nullptr);
+	std::vector<uint8_t> bytes(data, data + size_t(w) * h * 3);
+	stbi_image_free(data);
+	return bytes;
+}
+
+// Renders need a working scene loader; say so clearly if it fails.
+Run require_render(const std::vector<std::string>& args) {
+	Run result = run(args);
+	INFO("pathtracer_reference " << joined(args) << "\nstdout:\n" << result.out << "stderr:\n" << result.err);
+	REQUIRE(result.status == 0);
+	return result;
+}
+
+} // namespace
+
+TEST_CASE("cli: --help explains every option and every view, and succeeds") {
+	In_Temp_Dir here;
+	Run result = run({"--help"});
+	CHECK(result.status == 0);
+	CHECK(result.err.empty());
+	for (const char* word : {"SCENE.json", "--out", "--exr", "--variance", "--nan-map", "--spp", "--width", "--height",
+	                         "--max-depth", "--seed", "--threads", "--view", "--exposure", "--quiet", "--help", "path",
+	                         "eye", "normals", "bvh", "direction"}) {
+		INFO("--help does not mention " << word);
+		CHECK(result.out.find(word) != std::string::npos);
+	}
+	CHECK(here.new_files().empty());
+	// --help wins over everything else on the line.
+	CHECK(run({"sphere.json", "--spp", "0", "--help"}).status == 0);
+}
+
+TEST_CASE("cli: bad input gives one 'error:' line naming the problem, a non-zero status and no file") {
+	In_Temp_Dir here;
+	struct Case {
+		std::vector<std::string> args;
+		std::vector<std::string> message_names; // what the message must mention
+	};
+	const std::vector<Case> cases{
+		{{}, {"scene"}},
+		{{"--spp", "4"}, {"scene"}},
+		{{"sphere.json", "--bogus"}, {"--bogus"}},
+		{{"sphere.json", "-x"}, {"-x"}},
+		{{"sphere.json", "--spp"}, {"--spp", "missing"}},
+		{{"sphere.json", "--spp", "--quiet"}, {"--spp", "missing"}},
+		{{"sphere.json", "--spp", "many"}, {"--spp", "many"}},
+		{{"sphere.json", "--spp", "0"}, {"--spp", "'0'"}},
+		{{"sphere.json", "--spp", "2.5"}, {"--spp", "2.5"}},
+		{{"sphere.json", "--spp=-4"}, {"--spp", "-4"}},
+		{{"sphere.json", "--width", "0"}, {"--width", "'0'"}},
+		{{"sphere.json", "--width", "99999999999"}, {"--width", "99999999999"}},
+		{{"sphere.json", "--height", "-3"}, {"--height", "-3"}},
+		{{"sphere.json", "--max-depth", "deep"}, {"--max-depth", "deep"}},
+		{{"sphere.json", "--seed", "-1"}, {"--seed", "-1"}},
+		{{"sphere.json", "--threads", "-2"}, {"--threads", "-2"}},
+		{{"sphere.json", "--exposure", "bright"}, {"--exposure", "bright"}},
+		{{"sphere.json", "--exposure", "inf"}, {"--exposure", "inf"}},
+		{{"sphere.json", "--view", "albedo"}, {"--view", "albedo"}},
+		{{"sphere.json", "--out", "image.jpg"}, {"--out", ".png"}},
+		{{"sphere.json", "--exr", "image.png"}, {"--exr", ".exr"}},
+		{{"sphere.json", "--variance", "variance.png"}, {"--variance", ".exr"}},
+		{{"sphere.json", "--nan-map", "nan.exr"}, {"--nan-map", ".png"}},
+		{{"sphere.json", "--exr", "same.exr", "--variance", "same.exr"}, {"same.exr"}},
+		{{"sphere.json", "--quiet=yes"}, {"--quiet"}},
+		{{"sphere.json", "other.json"}, {"other.json"}},
+		{{"missing.json"}, {"missing.json"}},
+		{{"broken.json"}, {"broken.json"}},
+	};
+	for (const Case& c : cases) {
+		// Ask for every output first (the case's own options come later and win), so a partial
+		// render would leave files behind.
+		std::vector<std::string> args{"--exr", "a.exr", "--variance", "v.exr", "--nan-map", "n.png"};
+		args.insert(args.end(), c.args.begin(), c.args.end());
+		if (c.args.empty()) args.clear(); // no arguments at all
+		Run result = run(args);
+		INFO("pathtracer_reference " << joined(args) << "\nstdout: " << result.out << "\nstderr: " << result.err);
+		CHECK(result.status != 0);
+		CHECK(result.err.rfind("error: ", 0) == 0);
+		CHECK(std::count(result.err.begin(), result.err.end(), '\n') == 1);
+		for (const std::string& name : c.message_names) {
+			INFO("the message should mention " << name);
+			CHECK(result.err.find(name) != std::string::npos);
+		}
+		CHECK(result.out.empty());
+		std::vector<std::string> files = here.new_files();
+		INFO("files written: " << joined(files));
+		CHECK(files.empty());
+	}
+}
+
+TEST_CASE("cli: a render writes the PNG (default out/<scene>.png), the EXRs and reports them") {
+	In_Temp_Dir here;
+	Run result = require_render({"sphere.json", "--exr", "mean.exr", "--variance", "var/variance.exr", "--nan-map",
+	                             "nan.png", "--threads", "2"});
+	for (const char* file : {"out/sphere.png", "mean.exr", "var/variance.exr", "nan.png"}) {
+		INFO(file);
+		CHECK(fs::exists(file));
+		CHECK(result.out.find(std::string("wrote ") + file + "\n") != std::string::npos);
+	}
+	HDR_Image mean = read_image("mean.exr");
+	CHECK(mean.w == 16u);
+	CHECK(mean.h == 12u);
+	HDR_Image variance = read_image("var/variance.exr");
+	CHECK(variance.w == 16u);
+	CHECK(variance.h == 12u);
+	CHECK(result.out.find("samples/s") != std::string::npos);
+	CHECK(result.out.find("non-finite samples: 0\n") != std::string::npos);
+	CHECK(result.err.empty()); // no progress bar: err is not a terminal in this test
+}
+
+TEST_CASE("cli: --width, --height, --spp and --exposure override the scene for this run") {
+	In_Temp_Dir here;
+	Run result = require_render({"sphere.json", "--out", "small.png", "--exr", "small.exr", "--width", "8", "--height",
+	                             "6", "--spp", "3", "--exposure", "1.5"});
+	HDR_Image image = read_image("small.exr");
+	CHECK(image.w == 8u);
+	CHECK(image.h == 6u);
+	CHECK(result.out.find("8 x 6 pixels, 3 samples") != std::string::npos);
+	// The PNG is the EXR through write_png with the same exposure.
+	write_png("expected.png", image, 1.5f);
+	CHECK(png_bytes("small.png") == png_bytes("expected.png"));
+}
+
+TEST_CASE("cli: --seed chooses the random numbers: same seed same image, another seed another image") {
+	In_Temp_Dir here;
+	require_render({"sphere.json", "--quiet", "--exr", "a.exr", "--seed", "5", "--threads", "1"});
+	require_render({"sphere.json", "--quiet", "--exr", "b.exr", "--seed", "5", "--threads", "2"});
+	require_render({"sphere.json", "--quiet", "--exr", "c.exr", "--seed", "6"});
+	CHECK(read_image("a.exr").pixels == read_image("b.exr").pixels);
+	CHECK(read_image("a.exr").pixels != read_image("c.exr").pixels);
+}
+
+TEST_CASE("cli: --quiet prints nothing, and the progress bar appears only on a terminal") {
+	In_Temp_Dir here;
+	Run quiet = run({"sphere.json", "--quiet"}, true);
+	CHECK(quiet.status == 0);
+	CHECK(quiet.out.empty());
+	CHECK(quiet.err.empty());
+	CHECK(fs::exists("out/sphere.png"));
+
+	Run terminal = run({"sphere.json"}, true);
+	CHECK(terminal.status == 0);
+	CHECK(terminal.err.find("100%") != std::string::npos);
+}
+
+TEST_CASE("cli: non-finite samples are counted, reported with a warning, and marked in the NaN map") {
+	In_Temp_Dir here;
+	// Emission and sky near the float maximum: emitted plus reflected radiance overflows to +inf.
+	std::ofstream("overflow.json") << R"({
+		"camera": {"position": [0, 0, 3], "target": [0, 0, 0], "vertical_fov": 50},
+		"film": {"width": 16, "height": 12, "samples": 2, "max_depth": 3, "seed": 1},
+		"materials": {"hot": {"type": "lambertian", "albedo": [0.9, 0.9, 0.9], "emission": [3e38, 3e38, 3e38]}},
+		"objects": [{"type": "sphere", "radius": 1, "material": "hot"}],
+		"environment": {"type": "constant", "radiance": [3e38, 3e38, 3e38]}
+	})";
+	Run result = require_render({"overflow.json", "--nan-map", "nan.png"});
+	CHECK(result.out.find("non-finite samples: 0\n") == std::string::npos);
+	CHECK(result.err.rfind("warning: ", 0) == 0);
+	CHECK(result.err.find("NaN or infinite") != std::string::npos);
+	CHECK(result.err.find("nan.png") != std::string::npos);
+	std::vector<uint8_t> map = png_bytes("nan.png");
+	CHECK(std::count(map.begin(), map.end(), uint8_t(255)) > 0);
+	CHECK(std::count(map.begin(), map.end(), uint8_t(0)) > 0); // the sky pixels are fine
+}
+
+TEST_CASE("cli: an image that cannot be written gives an error naming it") {
+	In_Temp_Dir here;
+	std::ofstream("blocker") << "a file where a directory is needed";
+	Run result = run({"sphere.json", "--quiet", "--out", "blocker/image.png"});
+	CHECK(result.status != 0);
+	CHECK(result.err.rfind("error: ", 0) == 0);
+	CHECK(result.err.find("blocker/image.png") != std::string::npos);
+}
+
+TEST_CASE("cli: the debug views eye, normals, bvh and direction show the scene (not a black image)") {
+	In_Temp_Dir here;
+	for (const char* view : {"eye", "normals", "bvh", "direction"}) {
+		INFO("--view " << view << " rendered a black image: check the reference tasks 1-3 and "
+		     "framework/pathtracer.cpp");
+		require_render({"sphere.json", "--quiet", "--view", view, "--exr", "view.exr"});
+		CHECK(any_nonzero(read_image("view.exr")));
+	}
+}
+
+TEST_CASE("Progress_Bar: percentage and ETA on one line when enabled, nothing when disabled") {
+	std::ostringstream silent;
+	{
+		Progress_Bar bar(silent, false);
+		bar.update(1, 4);
+		bar.update(4, 4);
+	}
+	CHECK(silent.str().empty());
+
+	std::ostringstream out;
+	Progress_Bar bar(out, true);
+	bar.update(1, 4);
+	CHECK(out.str().find(" 25%") != std::string::npos);
+	CHECK(out.str().find("ETA") != std::string::npos);
+	CHECK(out.str().find('\n') == std::string::npos); // redrawn with '\r', never a new line
+	bar.update(3, 4);
+	std::string before_late_report = out.str();
+	bar.update(2, 4); // a slower thread reporting late: the bar must not move backwards
+	CHECK(out.str() == before_late_report);
+	bar.update(4, 4);
+	CHECK(out.str().find("100%") != std::string::npos);
+	bar.finish();
+	CHECK(out.str().back() == '\r'); // the line is erased for the next output
+	CHECK(out.str().find('\n') == std::string::npos);
+}

@@ -1,0 +1,200 @@
+// Rendering (framework/render.h) and the film (framework/film.h): a render is a pure function of
+// (scene, settings, seed), whatever the threads and tile order; pixels keep an exact mean and
+// variance; non-finite samples are counted, never averaged.
+#include "render.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstring>
+#include <limits>
+#include <mutex>
+#include <vector>
+
+namespace {
+
+// A grey diffuse sphere under a white sky, seen from the front: every pixel depends on random
+// numbers (the jittered camera ray of task 1, and in the path view the bounces of task 4).
+Scene sphere_scene() {
+	Scene scene;
+	scene.camera = Camera::look_at(Vec3{0.0f, 0.0f, 3.0f}, Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f}, 50.0f, 4.0f / 3.0f);
+	scene.settings.width = 24;
+	scene.settings.height = 18;
+	scene.settings.samples = 4;
+	scene.settings.max_depth = 3;
+	scene.settings.seed = 7;
+	scene.materials.push_back(Material{BSDF(BSDF_Lambertian{Spectrum{0.6f}}), Spectrum{0.0f}});
+	scene.material_names.push_back("grey");
+	scene.objects.emplace_back(Sphere{1.0f}, Mat4{1.0f}, 0, 0);
+	scene.environment = Env_Constant{Spectrum{1.0f}};
+	scene.commit();
+	return scene;
+}
+
+Film render_with(const Scene& scene, View view, Render_Options options, uint64_t seed = 7) {
+	Render_Settings settings = scene.settings;
+	settings.seed = seed;
+	return render(Pathtracer(scene, settings, view), options);
+}
+
+Render_Options threads_and_tiles(uint32_t threads, uint32_t tile_size, bool shuffle = false) {
+	Render_Options options;
+	options.threads = threads;
+	options.tile_size = tile_size;
+	options.shuffle_tiles = shuffle;
+	return options;
+}
+
+bool same_bits(const Pixel_Stats& a, const Pixel_Stats& b) {
+	return a.count == b.count && a.non_finite == b.non_finite && std::memcmp(&a.mean, &b.mean, sizeof a.mean) == 0 &&
+	       std::memcmp(&a.m2, &b.m2, sizeof a.m2) == 0;
+}
+
+// Index of the first pixel whose statistics differ in any bit, or -1 if the films are identical.
+long first_difference(const Film& a, const Film& b) {
+	REQUIRE(a.w == b.w);
+	REQUIRE(a.h == b.h);
+	for (size_t i = 0; i < a.pixels.size(); i++) {
+		if (!same_bits(a.pixels[i], b.pixels[i])) return long(i);
+	}
+	return -1;
+}
+
+// The determinism checks below prove nothing unless the pixels depend on the random numbers: a
+// pixel whose samples differ from each other (sum of squared deviations m2 > 0) does.
+void require_random_pixels(const Film& film) {
+	size_t random = 0;
+	for (const Pixel_Stats& p : film.pixels) random += p.m2 != glm::dvec3{0.0};
+	INFO(random << " of " << film.pixels.size() << " pixels have differing samples; the test scene needs the reference "
+	     "tasks (task 1 for the direction view, tasks 1-4 for the path view) to work");
+	REQUIRE(random >= film.pixels.size() / 4);
+}
+
+} // namespace
+
+TEST_CASE("render is bit-identical for any number of threads, tile size and tile order") {
+	Scene scene = sphere_scene();
+	View view = GENERATE(View::direction, View::path);
+	CAPTURE(view_name(view));
+	Film reference = render_with(scene, view, threads_and_tiles(1, 16));
+	require_random_pixels(reference);
+
+	// (threads, tile size, shuffled tiles); 0 threads = all hardware threads.
+	for (Render_Options options : {threads_and_tiles(2, 16), threads_and_tiles(1, 1), threads_and_tiles(2, 5),
+	                               threads_and_tiles(2, 64), threads_and_tiles(1, 16, true),
+	                               threads_and_tiles(2, 3, true), threads_and_tiles(0, 7, true)}) {
+		INFO("threads " << options.threads << ", tile size " << options.tile_size
+		     << (options.shuffle_tiles ? ", shuffled tiles" : ""));
+		long pixel = first_difference(reference, render_with(scene, view, options));
+		INFO("first differing pixel: " << pixel << " (a pixel's samples must not depend on which thread or "
+		     "tile draws them: seed each with RNG::for_sample)");
+		CHECK(pixel == -1);
+	}
+}
+
+TEST_CASE("render: the same seed gives the same image, another seed another image") {
+	Scene scene = sphere_scene();
+	View view = GENERATE(View::direction, View::path);
+	CAPTURE(view_name(view));
+	Film a = render_with(scene, view, threads_and_tiles(2, 8), 7);
+	require_random_pixels(a);
+	CHECK(first_difference(a, render_with(scene, view, threads_and_tiles(2, 8), 7)) == -1);
+
+	// Every pixel whose samples vary has 4 of them: with new random numbers its statistics change.
+	Film b = render_with(scene, view, threads_and_tiles(2, 8), 8);
+	size_t random = 0, unchanged = 0;
+	for (size_t i = 0; i < a.pixels.size(); i++) {
+		if (a.pixels[i].m2 == glm::dvec3{0.0}) continue;
+		random++;
+		unchanged += same_bits(a.pixels[i], b.pixels[i]);
+	}
+	INFO(unchanged << " of " << random << " pixels with random samples are the same for seeds 7 and 8: "
+	     "RNG::for_sample must use the render seed");
+	CHECK(unchanged == 0);
+}
+
+TEST_CASE("render draws settings.samples samples of every pixel and reports progress up to all tiles") {
+	Scene scene = sphere_scene();
+	Render_Options options = threads_and_tiles(2, 5);
+	std::mutex mutex;
+	std::vector<size_t> reports;
+	size_t total = 0;
+	options.progress = [&](size_t done, size_t all) {
+		std::lock_guard<std::mutex> lock(mutex);
+		reports.push_back(done);
+		total = all;
+	};
+	Film film = render_with(scene, View::direction, options);
+	for (const Pixel_Stats& p : film.pixels) REQUIRE(p.count + p.non_finite == scene.settings.samples);
+
+	const size_t tiles = ((24 + 4) / 5) * ((18 + 4) / 5); // ceil(24 / 5) * ceil(18 / 5)
+	CHECK(total == tiles);
+	std::sort(reports.begin(), reports.end());
+	std::vector<size_t> expected(tiles);
+	for (size_t i = 0; i < tiles; i++) expected[i] = i + 1;
+	CHECK(reports == expected); // each tile reported once, with counts 1 .. tiles
+}
+
+TEST_CASE("Pixel_Stats: mean and unbiased variance equal the two-pass formulas") {
+	// Samples far from 0 with a small spread: a one-pass sum of squares would lose the variance.
+	std::vector<Spectrum> samples;
+	for (int i = 0; i < 50; i++) {
+		float k = float(i % 7) - 3.0f;
+		samples.push_back(Spectrum{0.25f * float(i), 1e4f + 0.01f * k, (i % 2) ? 3.0f : -1.0f});
+	}
+	Pixel_Stats stats;
+	for (Spectrum s : samples) stats.add(s);
+	REQUIRE(stats.count == samples.size());
+	CHECK(stats.non_finite == 0u);
+
+	// Two-pass: mean = sum x / n, then s^2 = sum (x - mean)^2 / (n - 1).
+	const double n = double(samples.size());
+	Film film(1, 1);
+	film.pixels[0] = stats;
+	for (int c = 0; c < 3; c++) {
+		double sum = 0.0, squares = 0.0;
+		for (Spectrum s : samples) sum += double(s[c]);
+		double mean = sum / n;
+		for (Spectrum s : samples) squares += (double(s[c]) - mean) * (double(s[c]) - mean);
+		double variance = squares / (n - 1.0);
+		CAPTURE(c, mean, variance, stats.mean[c], stats.m2[c]);
+		CHECK(stats.mean[c] == Approx(mean).epsilon(1e-12));
+		CHECK(stats.m2[c] / (n - 1.0) == Approx(variance).epsilon(1e-9));
+		// The film's images are the same numbers in float.
+		CHECK(film.mean().pixels[0][c] == Approx(float(mean)).epsilon(1e-6));
+		CHECK(film.variance().pixels[0][c] == Approx(float(variance)).epsilon(1e-6));
+	}
+}
+
+TEST_CASE("Pixel_Stats: NaN and infinite samples are counted and left out of the mean") {
+	const float nan = std::numeric_limits<float>::quiet_NaN();
+	Pixel_Stats stats;
+	stats.add(Spectrum{1.0f, 2.0f, 3.0f});
+	stats.add(Spectrum{nan, 0.0f, 0.0f});
+	stats.add(Spectrum{0.0f, INF_F, 0.0f});
+	stats.add(Spectrum{0.0f, 0.0f, -INF_F});
+	stats.add(Spectrum{3.0f, 4.0f, 5.0f});
+	CHECK(stats.count == 2u);
+	CHECK(stats.non_finite == 3u);
+	CHECK(stats.mean == glm::dvec3{2.0, 3.0, 4.0});
+	CHECK(stats.m2 == glm::dvec3{2.0, 2.0, 2.0}); // (1 - 2)^2 + (3 - 2)^2 per channel
+}
+
+TEST_CASE("Film: non_finite() sums the pixels, non_finite_map() marks them, variance of one sample is 0") {
+	Film film(3, 2);
+	film.pixels[1].add(Spectrum{std::numeric_limits<float>::quiet_NaN()});
+	film.pixels[1].add(Spectrum{INF_F});
+	film.pixels[4].add(Spectrum{-INF_F});
+	film.pixels[5].add(Spectrum{0.5f});
+	CHECK(film.non_finite() == 3u);
+
+	HDR_Image map = film.non_finite_map();
+	REQUIRE(map.w == 3u);
+	REQUIRE(map.h == 2u);
+	for (size_t i = 0; i < map.pixels.size(); i++) {
+		CAPTURE(i);
+		CHECK(map.pixels[i] == Spectrum{(i == 1 || i == 4) ? 1.0f : 0.0f});
+	}
+	CHECK(film.mean().pixels[5] == Spectrum{0.5f});
+	CHECK(film.variance().pixels[5] == Spectrum{0.0f}); // s^2 needs two samples; 0 with fewer
+}
