@@ -4,12 +4,15 @@
 Vec2 direction_to_uv(Vec3 dir) {
 	// TODO (Task 7, handout §7.1): direction -> (theta, phi) -> uv, with the convention in
 	// env_light.h.
+	// - theta is the angle from +y; phi = atan2(z, x) is in [-pi, pi]: move it into [0, 2 pi).
+	// - u must stay below 1 (a tiny negative phi plus 2 pi can round to 2 pi).
+	// - Never NaN, also at the poles (x = z = 0).
 	(void)dir;
 	return Vec2{};
 }
 
 Vec3 uv_to_direction(Vec2 uv) {
-	// TODO (Task 7, handout §7.1): the inverse of direction_to_uv.
+	// TODO (Task 7, handout §7.1): the inverse of direction_to_uv: theta = pi v, phi = 2 pi u.
 	(void)uv;
 	return Vec3{0.0f, 1.0f, 0.0f};
 }
@@ -17,7 +20,8 @@ Vec3 uv_to_direction(Vec2 uv) {
 namespace Samplers::Sphere {
 
 Vec3 Uniform::sample(Vec2 u) const {
-	// TODO (Task 7, handout §7.2): a uniformly distributed direction on the unit sphere.
+	// TODO (Task 7, handout §7.2): a uniformly distributed direction on the unit sphere. Hint: the
+	// height y of a uniform point on the sphere is itself uniform in [-1, 1].
 	(void)u;
 	return Vec3{0.0f, 1.0f, 0.0f};
 }
@@ -29,21 +33,25 @@ float Uniform::pdf(Vec3 dir) const {
 }
 
 Image::Image(const HDR_Image& image) {
-	// TODO (Task 7, handout §7.4): fill pdf_texel and cdf from luminance * sin(theta) of each
-	// texel. Make the pdf non-zero wherever the bilinear radiance is (see the handout).
+	// TODO (Task 7, handout §7.4): set w and h, and fill pdf_texel and cdf (index j * w + i).
+	// - A texel's weight is the flux through it: luminance (math.h) times sin(theta) of its row.
+	// - The pdf must be non-zero wherever evaluate() is: take the luminance from the texel's 3 x 3
+	//   neighbourhood, as the bilinear lookup does (the handout gives two ways).
+	// - Normalize by the total (sum in double), so cdf.back() is 1. A black image has total 0.
 	(void)image;
 }
 
 Vec3 Image::sample(Vec2 u) const {
-	// TODO (Task 7, handout §7.4): choose a texel with the cdf, a point inside it, and return its
-	// direction.
+	// TODO (Task 7, handout §7.4): choose a texel with the cdf (binary search: std::upper_bound),
+	// then a uniformly random point inside it in uv, and return its direction.
 	(void)u;
 	return Vec3{0.0f, 1.0f, 0.0f};
 }
 
 float Image::pdf(Vec3 dir) const {
-	// TODO (Task 7, handout §7.4): the solid-angle density: texel probability over its uv area,
-	// times the Jacobian from uv to directions.
+	// TODO (Task 7, handout §7.4): the solid-angle density: the texel's probability over its uv
+	// area (pdf_texel * w * h), divided by the Jacobian d omega / (du dv) = 2 pi^2 sin(theta).
+	// Return 0 where sin(theta) = 0 instead of dividing by zero.
 	(void)dir;
 	return 0.0f;
 }
@@ -51,21 +59,22 @@ float Image::pdf(Vec3 dir) const {
 } // namespace Samplers::Sphere
 
 Vec3 Env_Map::sample(Vec2 u) const {
-	// TODO (Task 7, handout §7.3): importance-sample with `sampler` when importance_sampling is
-	// on, otherwise sample uniformly.
+	// TODO (Task 7, handouts §7.2 and §7.4): importance-sample with `sampler` when
+	// importance_sampling is on, otherwise sample uniformly.
 	(void)u;
 	return Vec3{0.0f, 1.0f, 0.0f};
 }
 
 float Env_Map::pdf(Vec3 dir) const {
-	// TODO (Task 7, handout §7.3): the density matching sample().
+	// TODO (Task 7, handouts §7.2 and §7.4): the density matching sample().
 	(void)dir;
 	return 0.0f;
 }
 
 Spectrum Env_Map::evaluate(Vec3 dir) const {
 	// TODO (Task 7, handout §7.3): the radiance from `dir`: bilinear interpolation of the four
-	// nearest texel centres, wrapping in u and clamping in v.
+	// nearest texel centres (in x = u w - 0.5, y = v h - 0.5 the centres sit at integers), wrapping
+	// the column index around the seam and clamping the row index at the poles.
 	(void)dir;
 	return Spectrum{0.0f};
 }

@@ -1,0 +1,218 @@
+// Task 7 grader, handout §7.4: importance sampling of an environment map (Samplers::Sphere::Image
+// and Env_Map with importance_sampling on).
+#include "env_test_support.h"
+#include "sphere_chi2.h"
+
+#include <catch2/catch.hpp>
+
+#include <vector>
+
+using namespace env_test;
+
+namespace {
+
+struct Named_Map {
+	const char* name;
+	HDR_Image image;
+};
+
+// Integral over the sphere of `pdf`, computed in uv where d omega = 2 pi^2 sin(theta) du dv, at
+// the midpoints of a 4 x 4 grid inside every texel. For a pdf that is a constant per texel divided
+// by sin(theta) (handout §7.4) the rule is exact; a uniform-sphere Monte Carlo estimate would not
+// do, its variance is infinite because of the 1 / sin(theta) at the poles.
+template<typename Pdf> double integral_over_sphere(const Pdf& pdf, uint32_t w, uint32_t h) {
+	const uint32_t nu = 4 * w, nv = 4 * h;
+	double sum = 0.0;
+	for (uint32_t b = 0; b < nv; b++) {
+		double v = (b + 0.5) / nv;
+		for (uint32_t a = 0; a < nu; a++) {
+			double u = (a + 0.5) / nu;
+			sum += double(pdf(direction_at_uv(u, v))) * 2.0 * M_PI * M_PI * std::sin(M_PI * v);
+		}
+	}
+	return sum / (double(nu) * nv);
+}
+
+// Luminance (linear Rec. 709) of pure red and pure green: a test that the table uses luminance,
+// not e.g. the mean of the channels (which would make them equal).
+constexpr float Y_RED = 0.2126f, Y_GREEN = 0.7152f;
+
+} // namespace
+
+TEST_CASE("Image: pdf_texel and cdf describe a probability distribution over the texels", "[task7][importance]") {
+	const Named_Map maps[] = {{"a constant map", HDR_Image(32, 16, Spectrum{1.0f})},
+	                          {"a gradient", gradient_map()},
+	                          {"one bright texel", one_texel_map(32, 16, 11, 6)},
+	                          {"a sky with a sun", sky_map()}};
+	for (const Named_Map& m : maps) {
+		Samplers::Sphere::Image sampler(m.image);
+		size_t n = size_t(m.image.w) * m.image.h;
+		INFO("Image built from " << m.name << " (" << m.image.w << " x " << m.image.h
+		                         << "): w, h, pdf_texel and cdf as declared in env_light.h (handout §7.4)");
+		REQUIRE(sampler.w == m.image.w);
+		REQUIRE(sampler.h == m.image.h);
+		REQUIRE(sampler.pdf_texel.size() == n);
+		REQUIRE(sampler.cdf.size() == n);
+		double sum = 0.0;
+		size_t negative = 0, not_running_sum = 0;
+		for (size_t k = 0; k < n; k++) {
+			if (!(sampler.pdf_texel[k] >= 0.0f)) negative++;
+			sum += sampler.pdf_texel[k];
+			// The cdf is the running sum of pdf_texel (float rounding: 1e-5).
+			if (!(std::abs(sampler.cdf[k] - sum) <= 1e-5)) not_running_sum++;
+		}
+		INFO("pdf_texel: " << negative << " negative or NaN entries; sum " << sum
+		                   << " (must be 1: probabilities of choosing each texel); " << not_running_sum
+		                   << " cdf entries that are not the running sum of pdf_texel; cdf.back() = "
+		                   << sampler.cdf.back() << " (must be 1, or sampling can run past the last texel)");
+		CHECK(negative == 0);
+		CHECK(sum == Approx(1.0).epsilon(1e-5));
+		CHECK(not_running_sum == 0);
+		CHECK(sampler.cdf.back() == Approx(1.0f).epsilon(1e-6));
+	}
+}
+
+TEST_CASE("Image: a texel's probability is proportional to luminance * sin(theta)", "[task7][importance]") {
+	// Columns 0-15 red, 16-31 green. The bilinear lookup mixes only neighbouring columns, so away
+	// from the colour boundaries (and the seam) a texel's probability is Y * sin(theta_row) / total.
+	// sin(theta) at the row's centre and its mean over the row differ by less than 0.2 % at 16 rows,
+	// so either is accepted within 1 %; leaving sin(theta) out is off by up to a factor 10.
+	const uint32_t w = 32, h = 16;
+	HDR_Image image(w, h);
+	for (uint32_t j = 0; j < h; j++)
+		for (uint32_t i = 0; i < w; i++) image.at(i, j) = i < w / 2 ? Spectrum{1, 0, 0} : Spectrum{0, 1, 0};
+	Samplers::Sphere::Image sampler(image);
+	REQUIRE(sampler.pdf_texel.size() == size_t(w) * h);
+
+	auto flux = [&](uint32_t i, uint32_t j) {
+		return (i < w / 2 ? Y_RED : Y_GREEN) * std::sin(M_PI * (j + 0.5) / h);
+	};
+	const uint32_t ref_i = 24, ref_j = h / 2; // a green texel on the equator
+	int bad = 0;
+	std::string first;
+	for (uint32_t j = 0; j < h; j++) {
+		for (uint32_t i = 0; i < w; i++) {
+			bool near_boundary = i <= 1 || i >= w - 2 || (i >= w / 2 - 2 && i <= w / 2 + 1);
+			if (near_boundary) continue;
+			double expected = flux(i, j) / flux(ref_i, ref_j);
+			double got = double(sampler.pdf_texel[size_t(j) * w + i]) / sampler.pdf_texel[size_t(ref_j) * w + ref_i];
+			if (!(std::abs(got / expected - 1.0) <= 0.01)) {
+				if (bad++ == 0) {
+					std::ostringstream s;
+					s << "texel (" << i << ", " << j << "): pdf_texel relative to texel (" << ref_i << ", " << ref_j
+					  << ") is " << got << ", expected " << expected;
+					first = s.str();
+				}
+			}
+		}
+	}
+	INFO("the probability of a texel must be proportional to its luminance (0.2126 r + 0.7152 g + 0.0722 b, "
+	     "luminance() in math.h) times sin(theta) of its row: the flux through it (handout §7.4). "
+	     << bad << " texels off by more than 1 %; first: " << first);
+	CHECK(bad == 0);
+}
+
+TEST_CASE("Image::pdf integrates to 1 over the sphere", "[task7][importance]") {
+	const Named_Map maps[] = {{"a constant map", HDR_Image(32, 16, Spectrum{1.0f})},
+	                          {"a gradient", gradient_map()},
+	                          {"one bright texel", one_texel_map(32, 16, 11, 6)},
+	                          {"one bright texel at the seam and the pole", one_texel_map(32, 16, 0, 0)},
+	                          {"a sky with a sun", sky_map()},
+	                          {"a black map", HDR_Image(16, 8)}};
+	for (const Named_Map& m : maps) {
+		Samplers::Sphere::Image sampler(m.image);
+		double integral = integral_over_sphere([&](Vec3 d) { return sampler.pdf(d); }, m.image.w, m.image.h);
+		// Float rounding of the texel probabilities and of sin(theta): far below 1e-3.
+		INFO("the integral of Image::pdf over all directions for " << m.name << " is " << integral
+		                                                           << ", must be 1. The pdf over solid angle is "
+		                                                              "pdf_texel * w * h / (2 pi^2 sin theta) (handout §7.4)");
+		CHECK(integral == Approx(1.0).epsilon(1e-3));
+	}
+}
+
+TEST_CASE("Image::sample draws directions with the density Image::pdf (chi-square)", "[task7][importance][statistical]") {
+	// Four of the grader's CHI2_TESTS. The cells refine the texel grid 2 x 2, so each cell lies in one
+	// texel, where pdf * sin(theta) is constant and the expected counts are exact.
+	const Named_Map maps[] = {{"one bright texel", one_texel_map(32, 16, 11, 6)},
+	                          {"one bright texel at the seam and the pole", one_texel_map(32, 16, 0, 0)},
+	                          {"a gradient", gradient_map()},
+	                          {"a sky with a sun", sky_map()}};
+	uint64_t seed = 700;
+	for (const Named_Map& m : maps) {
+		Samplers::Sphere::Image sampler(m.image);
+		stats::Sphere_Chi2_Settings settings;
+		settings.theta_cells = 2 * m.image.h;
+		settings.phi_cells = 2 * m.image.w;
+		settings.integration_resolution = 2;
+		settings.seed = seed++;
+		auto result = stats::sphere_chi2([&](RNG& rng) { return sampler.sample(rng.unit2()); },
+		                                 [&](Vec3 d) { return sampler.pdf(d); }, settings);
+		INFO("importance samples of " << m.name << " must follow Image::pdf: choose a texel by the cdf, a uniform "
+		                                 "point inside it in uv, and let pdf divide by 2 pi^2 sin(theta) (handout §7.4). "
+		                              << result.summary() << "; significance " << chi2_alpha());
+		CHECK(result.pass(chi2_alpha()));
+	}
+}
+
+TEST_CASE("a constant map: the weights L / pdf average 4 pi L and stay below twice that", "[task7][importance][statistical]") {
+	// E[L / pdf] = integral of L over the sphere = 4 pi L for any correct pdf (three of the grader's
+	// z-tests). A weight is 4 pi L sin(theta) / sin(theta_row) up to the table's normalization;
+	// sin(theta) / sin(theta_row) < 2 in the rows at the poles (sin(2x) / sin(x) = 2 cos(x) with the
+	// row's centre, and Delta cot(Delta / 2) with its mean), about 1 elsewhere.
+	const Spectrum L{0.5f, 1.0f, 2.0f};
+	Env_Map env(HDR_Image(32, 16, L), true);
+	const size_t N = 200000;
+	RNG rng(76);
+	glm::dvec3 sum{0.0}, sum2{0.0};
+	size_t not_finite = 0, too_large = 0;
+	std::string first_large;
+	for (size_t n = 0; n < N; n++) {
+		Vec3 d = env.sample(rng.unit2());
+		float pdf = env.pdf(d);
+		Spectrum weight = pdf > 0.0f ? env.evaluate(d) / pdf : Spectrum{0.0f}; // a renderer skips pdf = 0
+		if (!is_finite(weight)) {
+			not_finite++;
+			continue;
+		}
+		if (!(weight.g <= 2.0f * 4.0f * PI_F * L.g * (1.0f + 1e-4f))) {
+			if (too_large++ == 0) first_large = "direction " + str(d) + " with pdf " + std::to_string(pdf) + ", weight " + str(weight);
+		}
+		sum += glm::dvec3(weight);
+		sum2 += glm::dvec3(weight) * glm::dvec3(weight);
+	}
+	{
+		INFO("L / pdf was not finite for " << not_finite << " importance samples of a constant map (handout §7.4)");
+		CHECK(not_finite == 0);
+	}
+	{
+		INFO(too_large << " weights L / pdf above 2 * 4 pi L = " << 8.0f * PI_F * L.g << "; first: " << first_large
+		               << ". Weight the texels by sin(theta) of their row (handout §7.4)");
+		CHECK(too_large == 0);
+	}
+	for (int c = 0; c < 3; c++) {
+		double mean = sum[c] / N, variance = (sum2[c] / N - mean * mean) * N / (N - 1.0);
+		double expected = 4.0 * M_PI * L[c], standard_error = std::sqrt(variance / N);
+		double allowed = z_critical() * standard_error + 1e-5 * expected; // plus float rounding
+		INFO("channel " << c << ": mean of L / pdf over " << N << " importance samples of a constant map is " << mean
+		                << ", expected 4 pi L = " << expected << " (allowed difference " << allowed << ", "
+		                << z_critical() << " standard errors). sample, pdf and evaluate must agree (handout §7.4)");
+		CHECK(std::abs(mean - expected) <= allowed);
+	}
+}
+
+TEST_CASE("a black map still gives valid samples and a normalized pdf", "[task7][importance]") {
+	// Nothing to importance-sample: the table must not divide by a zero total (handout §7.4).
+	Samplers::Sphere::Image sampler(HDR_Image(16, 8));
+	RNG rng(77);
+	for (int n = 0; n < 1000; n++) {
+		Vec3 d = sampler.sample(rng.unit2());
+		float pdf = sampler.pdf(d);
+		INFO("black map: Image::sample = " << str(d) << ", pdf " << pdf
+		                                   << "; must be a unit direction with a finite positive pdf: fall back to "
+		                                      "choosing texels by solid angle when the total is 0 (handout §7.4)");
+		REQUIRE(is_finite(d));
+		REQUIRE(glm::length(d) == Approx(1.0f).epsilon(1e-4));
+		REQUIRE(std::isfinite(pdf));
+		REQUIRE(pdf > 0.0f);
+	}
+}

@@ -1,0 +1,120 @@
+// Task 7 grader, handout §7.1: the equirectangular mapping between directions and uv.
+#include "env_test_support.h"
+
+#include <catch2/catch.hpp>
+
+using namespace env_test;
+
+namespace {
+// Angular tolerance of float trigonometry, in uv units (1e-5 of a turn is 0.0036 degrees).
+constexpr float UV_TOLERANCE = 1e-5f;
+
+// Distance between two u values on the circle (u = 0 and u = 1 are the same meridian).
+float u_distance(float a, float b) {
+	float d = std::abs(a - b);
+	return std::min(d, 1.0f - d);
+}
+} // namespace
+
+TEST_CASE("direction_to_uv: known directions land where the convention puts them", "[task7][mapping]") {
+	struct Known {
+		Vec3 dir;
+		Vec2 uv;
+		const char* name;
+	};
+	const Known known[] = {
+		{{1, 0, 0}, {0.0f, 0.5f}, "+x (phi = 0)"},
+		{{0, 0, 1}, {0.25f, 0.5f}, "+z (phi = pi / 2)"},
+		{{-1, 0, 0}, {0.5f, 0.5f}, "-x (phi = pi)"},
+		{{0, 0, -1}, {0.75f, 0.5f}, "-z (phi = 3 pi / 2)"},
+		{glm::normalize(Vec3{1, 1, 1}), {0.125f, float(std::acos(1.0 / std::sqrt(3.0)) / M_PI)}, "(1, 1, 1) / sqrt 3"},
+	};
+	for (const Known& k : known) {
+		Vec2 uv = direction_to_uv(k.dir);
+		INFO("direction_to_uv" << str(k.dir) << " [" << k.name << "] returned " << str(uv) << ", expected "
+		                       << str(k.uv) << ": theta = acos(y) / pi, phi = atan2(z, x) / (2 pi) (handout §7.1)");
+		CHECK(u_distance(uv.x, k.uv.x) <= UV_TOLERANCE);
+		CHECK(std::abs(uv.y - k.uv.y) <= UV_TOLERANCE);
+	}
+	{
+		Vec2 up = direction_to_uv(Vec3{0, 1, 0});
+		INFO("direction_to_uv(+y) returned " << str(up) << ": straight up is theta = 0, so v = 0 (handout §7.1)");
+		CHECK(std::abs(up.y) <= UV_TOLERANCE);
+	}
+	{
+		Vec2 down = direction_to_uv(Vec3{0, -1, 0});
+		INFO("direction_to_uv(-y) returned " << str(down) << ": straight down is theta = pi, so v = 1 (handout §7.1)");
+		CHECK(std::abs(down.y - 1.0f) <= UV_TOLERANCE);
+	}
+}
+
+TEST_CASE("uv_to_direction: known uv give the directions of the convention", "[task7][mapping]") {
+	struct Known {
+		Vec2 uv;
+		Vec3 dir;
+	};
+	const Known known[] = {
+		{{0.0f, 0.5f}, {1, 0, 0}},  {{0.25f, 0.5f}, {0, 0, 1}}, {{0.5f, 0.5f}, {-1, 0, 0}},
+		{{0.75f, 0.5f}, {0, 0, -1}}, {{0.3f, 0.0f}, {0, 1, 0}}, {{0.6f, 1.0f}, {0, -1, 0}},
+	};
+	for (const Known& k : known) {
+		Vec3 d = uv_to_direction(k.uv);
+		INFO("uv_to_direction" << str(k.uv) << " returned " << str(d) << ", expected " << str(k.dir)
+		                       << ": dir = (sin theta cos phi, cos theta, sin theta sin phi), theta = pi v, "
+		                          "phi = 2 pi u (handout §7.1)");
+		CHECK(glm::length(d - k.dir) <= 1e-5f);
+	}
+}
+
+TEST_CASE("uv_to_direction and direction_to_uv are each other's inverse", "[task7][mapping]") {
+	RNG rng(71);
+	int bad_directions = 0, bad_round_trips = 0;
+	std::string first_direction, first_round_trip;
+	for (int n = 0; n < 10000; n++) {
+		// Away from the poles, where u is undefined.
+		Vec2 uv{rng.unit(), 0.01f + 0.98f * rng.unit()};
+		Vec3 d = uv_to_direction(uv);
+		Vec3 expected = direction_at_uv(uv.x, uv.y);
+		if (!(glm::length(d - expected) <= 1e-5f)) {
+			if (bad_directions++ == 0)
+				first_direction = "uv_to_direction" + str(uv) + " = " + str(d) + ", expected " + str(expected);
+		}
+		Vec2 back = direction_to_uv(expected);
+		if (!(u_distance(back.x, uv.x) <= UV_TOLERANCE && std::abs(back.y - uv.y) <= UV_TOLERANCE)) {
+			if (bad_round_trips++ == 0)
+				first_round_trip = "direction_to_uv" + str(expected) + " = " + str(back) + ", expected " + str(uv);
+		}
+	}
+	{
+		INFO("uv_to_direction must return the unit direction of the convention (handout §7.1); first failure of "
+		     << bad_directions << ": " << first_direction);
+		CHECK(bad_directions == 0);
+	}
+	{
+		INFO("direction_to_uv must invert uv_to_direction (handout §7.1); first failure of " << bad_round_trips
+		                                                                                    << ": " << first_round_trip);
+		CHECK(bad_round_trips == 0);
+	}
+}
+
+TEST_CASE("direction_to_uv: u stays in [0, 1) and v in [0, 1], also just below phi = 0", "[task7][mapping]") {
+	// atan2 returns angles in [-pi, pi]: negative angles need 2 pi added, and a tiny negative angle
+	// plus 2 pi rounds to 2 pi, which is u = 1 (the same meridian as u = 0).
+	RNG rng(72);
+	int bad = 0;
+	std::string first;
+	auto check = [&](Vec3 d) {
+		Vec2 uv = direction_to_uv(d);
+		if (!(uv.x >= 0.0f && uv.x < 1.0f && uv.y >= 0.0f && uv.y <= 1.0f)) {
+			if (bad++ == 0) first = "direction_to_uv" + str(d) + " = " + str(uv);
+		}
+	};
+	for (float z : {-1e-3f, -1e-6f, -1e-9f, -1e-20f, -0.0f, 0.0f}) {
+		check(glm::normalize(Vec3{1.0f, 0.3f, z}));
+		check(glm::normalize(Vec3{1.0f, -0.7f, z}));
+	}
+	for (int n = 0; n < 10000; n++) check(direction_at_uv(rng.unit(), rng.unit()));
+	INFO("uv must lie in [0, 1) x [0, 1] (env_light.h): wrap u = 1 back to 0 (handout §7.1); " << bad
+	                                                                                           << " failures, first: " << first);
+	CHECK(bad == 0);
+}

@@ -1,0 +1,73 @@
+// Task 7 grader, handout §7.5: a diffuse sphere under a constant sky. A convex object cannot see
+// itself, so after one bounce every path ends in the sky: the sphere's pixels are exactly albedo * L
+// (testing-anchors §4, furnace family), whatever the sampling, and the sky's pixels are L.
+#include "env_test_support.h"
+#include "film_statistics.h"
+#include "furnace_scenes.h"
+#include "render.h"
+
+#include <catch2/catch.hpp>
+
+using namespace env_test;
+
+namespace {
+const Spectrum SKY{0.25f, 0.5f, 1.0f};
+const Spectrum ALBEDO{0.8f, 0.5f, 0.2f};
+constexpr float DISTANCE = 3.0f, V_FOV = 45.0f;
+constexpr uint32_t SIZE = 16;
+
+Film render_sphere(const Environment& environment) {
+	Furnace_Options options;
+	options.environment = SKY;
+	Scene scene = sphere_seen_from_outside(diffuse(ALBEDO), options, DISTANCE, V_FOV);
+	scene.environment = environment;
+	Render_Settings settings;
+	settings.width = settings.height = SIZE;
+	settings.samples = 64;
+	settings.max_depth = 4;
+	settings.seed = 7;
+	Pathtracer pathtracer(scene, settings);
+	Render_Options render_options;
+	render_options.threads = 2;
+	return render(pathtracer, render_options);
+}
+
+void check_channels(const Film& film, const Spectrum& expected, Pixel_Coverage::Kind kind, const std::string& what) {
+	Pixel_Coverage coverage(1.0f, DISTANCE, V_FOV, SIZE, SIZE);
+	auto select = [&](uint32_t x, uint32_t y) { return coverage(x, y) == kind; };
+	for (int c = 0; c < 3; c++) {
+		Mean_Check check = compare_mean(film, c, expected[c], z_critical(),
+		                                what + ", " + to_string(kind) + ", channel " + std::to_string(c), select);
+		INFO(check.message);
+		CHECK(check.pass);
+	}
+}
+} // namespace
+
+TEST_CASE("a diffuse sphere under a constant Env_Map renders albedo * L", "[task7][render][statistical]") {
+	// The image is constant, so evaluate returns L in every direction, and with light sampling
+	// (task 6) the path tracer also draws directions with Env_Map::sample and weighs them with pdf.
+	Film film = render_sphere(Env_Map(HDR_Image(16, 8, SKY), true));
+	{
+		INFO("non-finite samples in the render: look for a division by a zero pdf or sin(theta) (handout §7.4)");
+		CHECK(film.non_finite() == 0);
+	}
+	check_channels(film, SKY, Pixel_Coverage::background,
+	               "sky seen directly, expected L: Env_Map::evaluate of a constant image must return it (handout §7.3)");
+	check_channels(film, ALBEDO * SKY,
+	               Pixel_Coverage::sphere,
+	               "diffuse sphere under a constant Env_Map, expected albedo * L: evaluate, sample and pdf must agree "
+	               "(handout §7.3, §7.4)");
+}
+
+TEST_CASE("a diffuse sphere under Env_Constant renders albedo * L", "[task7][render][statistical]") {
+	// Env_Constant samples with Samplers::Sphere::Uniform (used when the path tracer samples lights).
+	Film film = render_sphere(Env_Constant{SKY});
+	{
+		INFO("non-finite samples in the render (handout §7.2)");
+		CHECK(film.non_finite() == 0);
+	}
+	check_channels(film, ALBEDO * SKY, Pixel_Coverage::sphere,
+	               "diffuse sphere under Env_Constant, expected albedo * L: Uniform::sample and pdf must agree "
+	               "(handout §7.2)");
+}
