@@ -10,6 +10,9 @@ Ray_Counters& ray_counters() {
 Instance::Instance(std::variant<Sphere, Tri_Mesh> shape_, Mat4 to_world_, uint32_t material_, uint32_t index_)
 	: shape(std::move(shape_)), to_world(to_world_), to_local(glm::inverse(to_world_)),
 	  normal_to_world(glm::inverseTranspose(Mat3(to_world_))), material(material_), index(index_) {
+	// A transform that reverses orientation (negative determinant, e.g. a scale of -1) turns the
+	// shape inside out, as in pbrt: its normals, and so its front side, face the other way.
+	if (glm::determinant(Mat3(to_world_)) < 0.0f) normal_to_world = -normal_to_world;
 	BBox local = std::visit([](const auto& s) { return s.bbox(); }, shape);
 	if (local.empty()) return;
 	// The world box of a transformed box: enclose its eight transformed corners.

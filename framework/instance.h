@@ -1,5 +1,7 @@
 #pragma once
-// A scene object: a shape in its own local space, placed in the world by a transform.
+// A scene object: a shape in its own local space, placed in the world by a transform. A transform
+// with a negative determinant (a mirror, a scale of -1) also turns the shape inside out: its normals
+// point inwards, so e.g. a sphere scaled by -1 emits towards its centre.
 #include "shapes.h"
 #include "tri_mesh.h"
 

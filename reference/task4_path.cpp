@@ -3,38 +3,94 @@
 #include "material.h"
 #include "pathtracer.h"
 
+#include <algorithm>
+
+// ---- The Lambertian BSDF (handout §4.1) ----------------------------------------------------------
+// Two-sided: the surface reflects on whichever side out_dir lies, so a path may arrive from below
+// the shading normal (back faces, flipped normals) and still scatter.
+
+namespace {
+bool same_side(Vec3 a, Vec3 b) {
+	return a.y * b.y > 0.0f;
+}
+} // namespace
+
 Scatter BSDF_Lambertian::scatter(RNG& rng, Vec3 out_dir) const {
-	// Not yet written (Task 4 reference arrives with Part II): sample in_dir from the cosine-weighted hemisphere around the
-	// local normal (+y), and return it with attenuation = evaluate(out_dir, in_dir).
-	(void)rng, (void)out_dir;
-	return Scatter{Vec3{0.0f, 1.0f, 0.0f}, Spectrum{0.0f}};
+	// Malley's method: a point uniform on the unit disk, projected up onto the hemisphere, is
+	// distributed with density cos(theta) / pi. Disk point (r, phi) with r = sqrt(u1), phi = 2 pi u2.
+	Vec2 u = rng.unit2();
+	float r = std::sqrt(u.x);
+	float phi = 2.0f * PI_F * u.y;
+	float cos_theta = std::sqrt(1.0f - u.x); // > 0 because u.x < 1
+	Vec3 in_dir{r * std::cos(phi), cos_theta, r * std::sin(phi)};
+	if (out_dir.y < 0.0f) in_dir.y = -in_dir.y; // reflect on the side the path arrived from
+	return Scatter{in_dir, evaluate(out_dir, in_dir)};
 }
 
 Spectrum BSDF_Lambertian::evaluate(Vec3 out_dir, Vec3 in_dir) const {
-	// Not yet written (Task 4 reference arrives with Part II): f = albedo / pi for directions on the same side as the normal.
-	(void)out_dir, (void)in_dir;
-	return Spectrum{0.0f};
+	// f = albedo / pi: the cosine-weighted hemisphere integral of f is then exactly the albedo.
+	return same_side(out_dir, in_dir) ? albedo * (1.0f / PI_F) : Spectrum{0.0f};
 }
 
 float BSDF_Lambertian::pdf(Vec3 out_dir, Vec3 in_dir) const {
-	// Not yet written (Task 4 reference arrives with Part II): the density of scatter() choosing in_dir: cos(theta) / pi.
-	(void)out_dir, (void)in_dir;
-	return 0.0f;
+	// p(in) = |cos(theta_in)| / pi on out_dir's side, 0 on the other.
+	return same_side(out_dir, in_dir) ? std::abs(in_dir.y) * (1.0f / PI_F) : 0.0f;
 }
 
+// ---- The estimator (handout §4.2, §4.3) ----------------------------------------------------------
+
+namespace {
+// Where a new ray may start hitting: a distance that grows with the magnitude of the hit point,
+// because the rounding error of a float coordinate does (Mitsuba 3's RayEpsilon scheme:
+// (1 + max |p_i|) * 1500 * 2^-24, about 9e-5 near the origin and 0.9 at 10^4).
+float ray_offset(Vec3 p) {
+	constexpr float RAY_EPSILON = 1500.0f * 0x1p-24f;
+	float magnitude = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+	return (1.0f + magnitude) * RAY_EPSILON;
+}
+
+// Russian roulette starts once a path has bounced this often: the first bounces carry most of the
+// image and are never cut.
+constexpr uint32_t ROULETTE_DEPTH = 3;
+
+float max_component(Spectrum s) {
+	return std::max({s.r, s.g, s.b});
+}
+
+// The contribution factor of one sample of the reflected light:
+// f * |cos(theta_in)| / pdf for a continuous BSDF, the attenuation itself for a discrete one.
+Spectrum sample_weight(const Incoming_Sample& s, Vec3 normal) {
+	if (s.discrete) return s.attenuation;
+	if (s.pdf <= 0.0f) return Spectrum{0.0f}; // a direction that cannot be sampled adds nothing
+	return s.attenuation * std::abs(glm::dot(s.direction, normal)) / s.pdf;
+}
+} // namespace
+
 Spectrum Pathtracer::shade(RNG& rng, const Ray& ray, const Trace& hit) const {
-	// Not yet written (Task 4 reference arrives with Part II): the path-tracing estimator at a surface hit.
-	// 1. Emitted light: material.emitted(out_dir) in the local frame (Frame::from_normal(hit.normal)),
-	//    where material = scene.materials[hit.material].
-	// 2. If ray.depth has reached settings.max_depth, stop there.
-	// 3. Choose the next direction with sample_incoming(rng, hit, material.bsdf, out_dir) (task 6
-	//    extends it).
-	// 4. Trace the new ray with trace(): set its dist_bounds so it cannot hit the surface it leaves,
-	//    and its depth to ray.depth + 1.
-	// 5. Weight the incoming light: attenuation * |cos| / pdf, or just attenuation when the sample
-	//    is discrete. Optionally add Russian roulette (handout §4.3) without adding bias.
-	//
-	// Until then this shows the Part I picture: surfaces lit from the eye.
-	(void)rng;
-	return eye_light(ray, hit);
+	const Material& material = scene.materials[hit.material];
+	Frame frame = Frame::from_normal(hit.normal);
+	Vec3 out_dir = -glm::normalize(ray.dir); // towards the previous vertex
+
+	// L_o = L_e + (one-sample estimate of the reflected radiance).
+	Spectrum radiance = material.emitted(frame.to_local(out_dir));
+	if (ray.depth >= settings.max_depth) return radiance; // no bounce left: emission only
+
+	Incoming_Sample s = sample_incoming(rng, hit, material.bsdf, out_dir);
+	Spectrum weight = sample_weight(s, hit.normal);
+	// A black weight ends the path. (NaN is not caught here on purpose: the film counts it.)
+	if (weight == Spectrum{0.0f}) return radiance;
+
+	// Russian roulette: continue with probability q and divide by q, so the expectation is
+	// unchanged. q = min(1, largest component of the weight): a bounce that keeps all the energy is
+	// never cut (white furnaces and clear glass stay noise-free); max_depth bounds the length.
+	if (ray.depth >= ROULETTE_DEPTH) {
+		float q = std::min(1.0f, max_component(weight));
+		if (q < 1.0f) {
+			if (!rng.coin_flip(q)) return radiance;
+			weight /= q;
+		}
+	}
+
+	Ray next(hit.position, s.direction, Vec2{ray_offset(hit.position), INF_F}, ray.depth + 1);
+	return radiance + weight * trace(rng, next);
 }

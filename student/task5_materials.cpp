@@ -2,7 +2,8 @@
 #include "material.h"
 
 Vec3 reflect(Vec3 dir) {
-	// TODO (Task 5, handout §5.1): mirror `dir` about the local normal (0, 1, 0).
+	// TODO (Task 5, handout §5.1): mirror `dir` about the local normal (0, 1, 0): the normal part
+	// stays, the tangential part changes sign.
 	(void)dir;
 	return Vec3{};
 }
@@ -20,8 +21,11 @@ Vec3 refract(Vec3 out_dir, float index_of_refraction, bool& was_internal) {
 
 float fresnel(float cos_theta, float index_of_refraction) {
 	// TODO (Task 5, handout §5.3): the exact unpolarized Fresnel reflectance
-	// F = (r_parallel^2 + r_perpendicular^2) / 2, or Schlick's approximation (see the handout for
-	// the difference the grader allows). cos_theta < 0 means the direction is inside.
+	// F = (r_parallel^2 + r_perpendicular^2) / 2 (the grader checks it to 1e-5: Schlick's
+	// approximation is not accurate enough, see the handout).
+	// - cos_theta > 0: the light meets the boundary from outside (index 1 -> index_of_refraction);
+	//   cos_theta < 0: from inside (index_of_refraction -> 1).
+	// - No transmitted direction (total internal reflection): return 1.
 	(void)cos_theta, (void)index_of_refraction;
 	return 0.0f;
 }
@@ -33,9 +37,10 @@ Scatter BSDF_Mirror::scatter(RNG& rng, Vec3 out_dir) const {
 }
 
 Scatter BSDF_Glass::scatter(RNG& rng, Vec3 out_dir) const {
-	// TODO (Task 5, handout §5.4): reflect with probability F = fresnel(...), otherwise refract.
-	// Under total internal reflection always reflect. Attenuation: reflectance for a reflection,
-	// transmittance for a refraction (the choice probabilities cancel the Fresnel weights).
+	// TODO (Task 5, handout §5.4): reflect with probability F = fresnel(out_dir.y, ...), otherwise
+	// refract. Under total internal reflection always reflect. Attenuation: reflectance for a
+	// reflection, transmittance for a refraction (the choice probabilities cancel the Fresnel
+	// weights), and no eta^2 factor (material.h).
 	(void)rng, (void)out_dir;
 	return Scatter{Vec3{0.0f, 1.0f, 0.0f}, Spectrum{0.0f}};
 }
