@@ -81,10 +81,13 @@ Spectrum Pathtracer::shade(RNG& rng, const Ray& ray, const Trace& hit) const {
 	if (weight == Spectrum{0.0f}) return radiance;
 
 	// Russian roulette: continue with probability q and divide by q, so the expectation is
-	// unchanged. q = min(1, largest component of the weight): a bounce that keeps all the energy is
-	// never cut (white furnaces and clear glass stay noise-free); max_depth bounds the length.
+	// unchanged. q = min(1, largest component of the surface's albedo): a surface that keeps all the
+	// energy is never cut (white furnaces and clear glass stay noise-free), and a survivor's weight
+	// grows by at most 1 / albedo. (q from the sample's weight instead would kill almost every
+	// light-sampled direction, whose weight is small because its pdf is large, and multiply the
+	// few survivors by the inverse: fireflies.) max_depth bounds the length.
 	if (ray.depth >= ROULETTE_DEPTH) {
-		float q = std::min(1.0f, max_component(weight));
+		float q = std::min(1.0f, max_component(material.bsdf.albedo()));
 		if (q < 1.0f) {
 			if (!rng.coin_flip(q)) return radiance;
 			weight /= q;

@@ -54,9 +54,14 @@ std::optional<Region> pixel_region(const Scene& scene, uint32_t x, uint32_t y, u
 
 struct Mean {
 	glm::dvec3 sum{0.0};
+	glm::dvec3 variance_sum{0.0}; // sum of the variances of the pixel means (ours only)
 	size_t count = 0;
 	Vec3 value() const {
 		return Vec3(sum / double(count));
+	}
+	// Standard error of the mean over the pixels, relative to it.
+	Vec3 relative_error() const {
+		return Vec3(glm::sqrt(variance_sum) / sum);
 	}
 };
 } // namespace
@@ -68,35 +73,42 @@ TEST_CASE("The reference renders the measured Cornell box like pbrt-v3 (image an
 	REQUIRE(pbrt.h == scene.settings.height);
 
 	Render_Settings settings = scene.settings;
-	settings.samples = 128;
+	settings.samples = 512;
 	settings.max_depth = 100; // as pbrt's render; Russian roulette ends paths long before
 	settings.seed = 1;
 	Film film = render(Pathtracer(scene, settings));
 	HDR_Image ours = film.mean();
+	HDR_Image ours_variance = film.variance(); // per sample; the pixel mean's is this / spp
 	REQUIRE(film.non_finite() == 0);
 
 	Mean ours_all, pbrt_all;
 	std::map<Region, Mean> ours_region, pbrt_region;
 	for (uint32_t y = 0; y < pbrt.h; y++) {
 		for (uint32_t x = 0; x < pbrt.w; x++) {
+			glm::dvec3 variance_of_mean = glm::dvec3(ours_variance.at(x, y)) / double(settings.samples);
 			ours_all.sum += glm::dvec3(ours.at(x, y));
+			ours_all.variance_sum += variance_of_mean;
 			pbrt_all.sum += glm::dvec3(pbrt.at(x, y));
 			ours_all.count++, pbrt_all.count++;
 			if (auto region = pixel_region(scene, x, y, pbrt.w, pbrt.h)) {
 				ours_region[*region].sum += glm::dvec3(ours.at(x, y));
+				ours_region[*region].variance_sum += variance_of_mean;
 				pbrt_region[*region].sum += glm::dvec3(pbrt.at(x, y));
 				ours_region[*region].count++, pbrt_region[*region].count++;
 			}
 		}
 	}
 
-	std::printf("%-12s %7s  %-28s %-28s %s\n", "region", "pixels", "ours (R, G, B)", "pbrt-v3 (R, G, B)", "difference");
+	std::printf("%-12s %7s  %-28s %-28s %-28s %s\n", "region", "pixels", "ours (R, G, B)", "pbrt-v3 (R, G, B)",
+	            "difference", "our standard error");
 	auto report = [](const char* name, const Mean& a, const Mean& b, float tolerance) {
 		Vec3 ours_mean = a.value(), pbrt_mean = b.value();
 		Vec3 rel = (ours_mean - pbrt_mean) / pbrt_mean;
-		std::printf("%-12s %7zu  (%.4f, %.4f, %.4f)   (%.4f, %.4f, %.4f)   (%+.2f%%, %+.2f%%, %+.2f%%)\n", name, a.count,
-		            ours_mean.r, ours_mean.g, ours_mean.b, pbrt_mean.r, pbrt_mean.g, pbrt_mean.b, 100 * rel.r,
-		            100 * rel.g, 100 * rel.b);
+		Vec3 se = a.relative_error();
+		std::printf("%-12s %7zu  (%.4f, %.4f, %.4f)   (%.4f, %.4f, %.4f)   (%+.2f%%, %+.2f%%, %+.2f%%)   "
+		            "(%.2f%%, %.2f%%, %.2f%%)\n",
+		            name, a.count, ours_mean.r, ours_mean.g, ours_mean.b, pbrt_mean.r, pbrt_mean.g, pbrt_mean.b,
+		            100 * rel.r, 100 * rel.g, 100 * rel.b, 100 * se.r, 100 * se.g, 100 * se.b);
 		for (int c = 0; c < 3; c++) {
 			INFO(name << ", channel " << "RGB"[c] << ": ours " << ours_mean[c] << ", pbrt-v3 " << pbrt_mean[c]
 			          << ", relative difference " << rel[c] << " (allowed " << tolerance << ")");

@@ -19,7 +19,7 @@ constexpr uint32_t SIZE = 16;
 Film render_sphere(const Environment& environment) {
 	Furnace_Options options;
 	options.environment = SKY;
-	Scene scene = sphere_seen_from_outside(diffuse(ALBEDO), options, DISTANCE, V_FOV);
+	Scene scene = sphere_seen_from_outside(diffuse_material(ALBEDO), options, DISTANCE, V_FOV);
 	scene.environment = environment;
 	Render_Settings settings;
 	settings.width = settings.height = SIZE;
