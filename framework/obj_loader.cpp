@@ -1,6 +1,93 @@
 #include "obj_loader.h"
 #include "error.h"
+#include "mesh_builder.h"
+#include "text_file.h"
+
+#include <tiny_obj_loader.h>
+
+namespace {
+
+// The first line of a tinyobjloader message (they end with newlines and may repeat).
+std::string first_line(const std::string& message) {
+	return message.substr(0, message.find('\n'));
+}
+
+// tinyobjloader reports faces with indices beyond the file's vertices only as warnings, and drops
+// such polygons while triangulating: we refuse them instead.
+void reject_bad_index_warnings(const std::string& path, const std::string& warnings) {
+	for (const char* sign : {"invalid vertex index", "out of bounds"}) {
+		size_t at = warnings.find(sign);
+		if (at == std::string::npos) continue;
+		size_t line_start = warnings.rfind('\n', at);
+		line_start = line_start == std::string::npos ? 0 : line_start + 1;
+		throw Input_Error(path + ": a face refers to data that the file does not define (" +
+		                  first_line(warnings.substr(line_start)) + ")");
+	}
+}
+
+// Flat x, y, z arrays as points; every coordinate must be finite.
+std::vector<Vec3> to_points(const std::string& path, const std::vector<tinyobj::real_t>& xyz, const char* what) {
+	std::vector<Vec3> points(xyz.size() / 3);
+	for (size_t i = 0; i < points.size(); i++) {
+		points[i] = Vec3{xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+		if (!is_finite(points[i])) {
+			throw Input_Error(path + ": " + what + " " + std::to_string(i + 1) + " has a coordinate that is not a finite number");
+		}
+	}
+	return points;
+}
+
+// A corner of a triangle, with its indices checked against the file's vertex and normal counts.
+// (Indices are reported 1-based, as in the file's "f" lines.)
+Mesh_Corner to_corner(const std::string& path, const tinyobj::index_t& index, size_t face,
+                      const std::vector<Vec3>& positions, const std::vector<Vec3>& normals) {
+	auto fail = [&](const char* what, int i, size_t count) {
+		throw Input_Error(path + ": triangle " + std::to_string(face + 1) + " refers to " + what + " " +
+		                  std::to_string(int64_t(i) + 1) + ", but the file defines " + std::to_string(count));
+	};
+	if (index.vertex_index < 0 || size_t(index.vertex_index) >= positions.size()) {
+		fail("vertex", index.vertex_index, positions.size());
+	}
+	Mesh_Corner corner{uint32_t(index.vertex_index), std::nullopt};
+	if (index.normal_index == -1) return corner; // no normal given
+	if (index.normal_index < 0 || size_t(index.normal_index) >= normals.size()) {
+		fail("normal", index.normal_index, normals.size());
+	}
+	corner.normal = normals[size_t(index.normal_index)];
+	return corner;
+}
+
+} // namespace
 
 std::vector<Triangle> load_obj(const std::string& path) {
-	throw Input_Error(path + ": OBJ loading is not written yet");
+	std::string text = read_text_file(path);
+	tinyobj::ObjReaderConfig config;
+	config.triangulate = true;
+	config.vertex_color = false;
+	tinyobj::ObjReader reader;
+	// Parsing from a string skips the .mtl file: the lab takes materials from the scene, not the OBJ.
+	if (!reader.ParseFromString(text, "", config)) {
+		throw Input_Error(path + ": not a valid OBJ file (" + first_line(reader.Error()) + ")");
+	}
+	std::vector<Vec3> positions = to_points(path, reader.GetAttrib().vertices, "vertex");
+	std::vector<Vec3> normals = to_points(path, reader.GetAttrib().normals, "normal");
+	std::vector<Mesh_Corner> corners;
+	for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+		const tinyobj::mesh_t& mesh = shape.mesh;
+		size_t first = 0;
+		for (unsigned int face_size : mesh.num_face_vertices) {
+			if (first + face_size > mesh.indices.size()) break;
+			if (face_size == 3) { // always, after triangulation
+				for (size_t k = 0; k < 3; k++) {
+					corners.push_back(to_corner(path, mesh.indices[first + k], corners.size() / 3, positions, normals));
+				}
+			}
+			first += face_size;
+		}
+	}
+	reject_bad_index_warnings(path, reader.Warning()); // faces tinyobjloader dropped
+	if (corners.empty()) {
+		throw Input_Error(path + ": no triangles (expected faces \"f a b c ...\" with three or more vertices)");
+	}
+	return build_triangles(positions, corners);
 }

@@ -1,0 +1,146 @@
+// load_obj (framework/obj_loader.h): triangles from Wavefront OBJ files via tinyobjloader. Normals
+// come from the file or are computed (area-weighted); degenerate faces are kept; a file that is
+// missing, has no triangles or refers to vertices it does not define is an Input_Error naming it.
+#include "error.h"
+#include "obj_loader.h"
+#include "temp_dir.h"
+
+#include <catch2/catch.hpp>
+
+#include <fstream>
+
+namespace {
+
+std::vector<Triangle> load_text(const Temp_Dir& dir, const std::string& text) {
+	std::string path = dir.file("mesh.obj");
+	std::ofstream(path) << text;
+	return load_obj(path);
+}
+
+// Loading `text` must fail with a message that starts with the file's name and contains `expected`.
+void require_obj_error(const std::string& text, const std::string& expected) {
+	Temp_Dir dir;
+	CAPTURE(text);
+	try {
+		load_text(dir, text);
+		FAIL("load_obj accepted a bad OBJ file; expected an Input_Error about: " << expected);
+	} catch (const Input_Error& e) {
+		std::string message = e.what();
+		CAPTURE(message);
+		CHECK(message.rfind(dir.file("mesh.obj") + ": ", 0) == 0);
+		CHECK(message.find(expected) != std::string::npos);
+	}
+}
+
+void require_near(Vec3 actual, Vec3 expected, const char* what) {
+	INFO(what << ": expected (" << expected.x << ", " << expected.y << ", " << expected.z << "), got (" << actual.x
+	          << ", " << actual.y << ", " << actual.z << ")");
+	CHECK(glm::length(actual - expected) < 1e-6f);
+}
+
+float area(const Triangle& t) {
+	return 0.5f * glm::length(glm::cross(t.v1.position - t.v0.position, t.v2.position - t.v0.position));
+}
+
+} // namespace
+
+TEST_CASE("load_obj reads the shipped meshes with their documented triangle counts", "[obj]") {
+	// Counts from /work/shared/assets/SOURCES.md (what tinyobjloader reports).
+	CHECK(load_obj("scenes/meshes/cornell_box.obj").size() == 32);
+	CHECK(load_obj("scenes/meshes/bunny_npm_lowres.obj").size() == 3674);
+	CHECK(load_obj("scenes/meshes/dragon_vrip_res4.obj").size() == 11102);
+}
+
+TEST_CASE("load_obj keeps the winding of the file: the Cornell box light faces down", "[obj]") {
+	std::vector<Triangle> triangles = load_obj("scenes/meshes/cornell_box.obj");
+	// The last two triangles are the light (SOURCES.md: its normal is -y by winding).
+	for (size_t i = 30; i < 32; i++) {
+		const Triangle& t = triangles[i];
+		CHECK(t.v0.position.y == Approx(548.7f));
+		Vec3 face = glm::normalize(glm::cross(t.v1.position - t.v0.position, t.v2.position - t.v0.position));
+		require_near(face, Vec3{0.0f, -1.0f, 0.0f}, "the light's face normal");
+		require_near(t.v0.normal, Vec3{0.0f, -1.0f, 0.0f}, "the light's computed vertex normal");
+	}
+}
+
+TEST_CASE("load_obj computes missing normals as area-weighted averages of the face normals", "[obj]") {
+	// Two faces folded along the edge (0,0,0)-(0,0,2): A has normal +y and area 2, B has normal
+	// +x and area 1. The shared vertices get normalize(2 * (0,1,0) + 1 * (1,0,0)) = (1,2,0)/sqrt(5),
+	// not the plain average (1,1,0)/sqrt(2); each other vertex gets its own face's normal.
+	Temp_Dir dir;
+	std::vector<Triangle> triangles = load_text(dir, "v 0 0 0\nv 0 0 2\nv 2 0 0\nv 0 1 0\n"
+	                                                 "f 1 2 3\nf 1 4 2\n");
+	REQUIRE(triangles.size() == 2);
+	const Vec3 shared = glm::normalize(Vec3{1.0f, 2.0f, 0.0f});
+	const Triangle& a = triangles[0];
+	const Triangle& b = triangles[1];
+	require_near(a.v0.normal, shared, "face A, shared vertex 1");
+	require_near(a.v1.normal, shared, "face A, shared vertex 2");
+	require_near(a.v2.normal, Vec3{0.0f, 1.0f, 0.0f}, "face A, its own vertex 3");
+	require_near(b.v0.normal, shared, "face B, shared vertex 1");
+	require_near(b.v1.normal, Vec3{1.0f, 0.0f, 0.0f}, "face B, its own vertex 4");
+	require_near(b.v2.normal, shared, "face B, shared vertex 2");
+}
+
+TEST_CASE("load_obj uses the file's normals where a face has them, normalized", "[obj]") {
+	Temp_Dir dir;
+	std::vector<Triangle> triangles = load_text(dir, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
+	                                                 "vn 0 0 2\nvn 0 3 4\n"
+	                                                 "f 1//1 2//2 3//1\n" // normals given
+	                                                 "f 2 4 3\n");        // none: computed
+	REQUIRE(triangles.size() == 2);
+	require_near(triangles[0].v0.normal, Vec3{0.0f, 0.0f, 1.0f}, "vn 0 0 2 normalized");
+	require_near(triangles[0].v1.normal, Vec3{0.0f, 0.6f, 0.8f}, "vn 0 3 4 normalized");
+	// The second face lies in z = 0 with counter-clockwise winding seen from +z.
+	require_near(triangles[1].v1.normal, Vec3{0.0f, 0.0f, 1.0f}, "computed normal of a face without vn");
+}
+
+TEST_CASE("load_obj triangulates polygons and keeps degenerate faces", "[obj]") {
+	Temp_Dir dir;
+	// A unit square as one quad, and a face whose three vertices are collinear.
+	std::vector<Triangle> triangles = load_text(dir, "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\n"
+	                                                 "f 1 2 3 4\nf 1 2 5\n");
+	REQUIRE(triangles.size() == 3);
+	CHECK(area(triangles[0]) + area(triangles[1]) == Approx(1.0f));
+	INFO("the degenerate face must be kept (the intersector copes) and get finite unit normals");
+	CHECK(area(triangles[2]) == 0.0f);
+	for (Vec3 n : {triangles[2].v0.normal, triangles[2].v1.normal, triangles[2].v2.normal}) {
+		CHECK(is_finite(n));
+		CHECK(glm::length(n) == Approx(1.0f));
+	}
+}
+
+TEST_CASE("load_obj rejects a missing file, a file without triangles and bad indices", "[obj][errors]") {
+	SECTION("a missing file") {
+		Temp_Dir dir;
+		std::string path = dir.file("nowhere.obj");
+		REQUIRE_THROWS_WITH(load_obj(path), Catch::StartsWith(path + ": cannot read the file"));
+	}
+	SECTION("no faces at all") {
+		require_obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\n", "no triangles");
+	}
+	SECTION("only lines and points, no faces") {
+		require_obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\np 3\n", "no triangles");
+	}
+	SECTION("an empty file") {
+		require_obj_error("", "no triangles");
+	}
+	SECTION("a vertex index beyond the vertices") {
+		require_obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", "vertex");
+	}
+	SECTION("a relative (negative) index before the first vertex") {
+		require_obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -5\n", "vertex");
+	}
+	SECTION("index 0 (OBJ indices start at 1)") {
+		require_obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "not a valid OBJ file");
+	}
+	SECTION("a normal index beyond the normals") {
+		require_obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//4\n", "normal");
+	}
+	SECTION("a quad with a bad index (tinyobjloader would drop it silently)") {
+		require_obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 1 2 4 7\n", "does not define");
+	}
+	SECTION("a vertex coordinate that overflows a float") {
+		require_obj_error("v 1e999 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "finite");
+	}
+}
