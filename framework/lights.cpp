@@ -99,10 +99,13 @@ float Area_Lights::pdf(size_t i, Vec3 from, Vec3 dir) const {
 	const Area_Light& light = lights[i];
 	float pdf = 0.0f;
 	if (light.triangles.empty()) {
-		// Both crossings of the sphere |from + s dir - c| = r (dir is unit).
+		// Both crossings of the sphere |from + s dir - c| = r (dir is unit): s = -b +- sqrt(disc),
+		// b = f.dir with f = from - c. The discriminant r^2 - |f - b dir|^2 (the squared half-chord)
+		// is computed as (r - |v|)(r + |v|) from the perpendicular part v = f - b dir, not as
+		// b^2 - (|f|^2 - r^2), which cancels catastrophically for rays that graze the sphere.
 		glm::dvec3 f = glm::dvec3(from) - glm::dvec3(light.center), d(dir);
-		double b = glm::dot(f, d), c = glm::dot(f, f) - double(light.radius) * light.radius;
-		double disc = b * b - c;
+		double b = glm::dot(f, d), r = light.radius, v = glm::length(f - b * d);
+		double disc = (r - v) * (r + v);
 		if (!(disc > 0.0)) return 0.0f;
 		for (double s : {-b - std::sqrt(disc), -b + std::sqrt(disc)}) {
 			if (s <= 0.0) continue;

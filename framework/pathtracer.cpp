@@ -4,6 +4,7 @@
 #include "lifecycle.h"
 
 #include <array>
+#include <stdexcept>
 
 namespace {
 constexpr std::array<std::pair<View, const char*>, 5> VIEW_NAMES{{
@@ -95,6 +96,10 @@ bool Pathtracer::has_lights() const {
 }
 
 Vec3 Pathtracer::sample_area_lights(RNG& rng, Vec3 from) const {
+	if (!has_lights()) {
+		throw std::logic_error("sample_area_lights: this scene has no lights; check has_lights() before "
+		                       "sampling them (handout §6.2)");
+	}
 	uint32_t i = rng.integer(uint32_t(light_count(scene)));
 	Vec3 dir;
 	if (i < scene.area_lights.count()) {
@@ -112,6 +117,7 @@ Vec3 Pathtracer::sample_area_lights(RNG& rng, Vec3 from) const {
 }
 
 float Pathtracer::area_lights_pdf(Vec3 from, Vec3 dir) const {
+	if (!has_lights()) return 0.0f; // no light can produce any direction
 	float pdf = 0.0f;
 	for (size_t i = 0; i < scene.area_lights.count(); i++) pdf += scene.area_lights.pdf(i, from, dir);
 	if (scene.environment) pdf += std::visit([&](const auto& env) { return env.pdf(dir); }, *scene.environment);

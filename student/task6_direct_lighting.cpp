@@ -3,13 +3,19 @@
 #include "pathtracer.h"
 
 Incoming_Sample Pathtracer::sample_incoming(RNG& rng, const Trace& hit, const BSDF& bsdf, Vec3 out_dir) const {
-	// TODO (Task 6, handout §6.2): the one-sample mixture of BSDF sampling and light sampling.
-	// - Discrete BSDFs, and scenes without lights (has_lights()), keep the BSDF sample below.
-	// - Otherwise flip a fair coin: sample the BSDF, or sample_area_lights(rng, hit.position).
-	// - Either way the density is the mixture's: 0.5 * bsdf pdf + 0.5 * area_lights_pdf(...).
-	//   Watch the spaces: the BSDF works in the local frame, the lights in world space.
+	// TODO (Task 6): the one-sample mixture of BSDF sampling and light sampling.
+	// 1. Discrete BSDFs (bsdf.is_discrete()) and scenes without lights (!has_lights()): keep the
+	//    BSDF sample below, unchanged (handout §6.2).
+	// 2. Otherwise flip a fair coin (rng.coin_flip(0.5f)): either sample the BSDF, or take
+	//    dir = sample_area_lights(rng, hit.position) (handout §6.2).
+	// 3. Whichever side of the coin drew the direction, return the mixture's density
+	//        pdf = 0.5 * bsdf.pdf(out_local, in_local) + 0.5 * area_lights_pdf(hit.position, in_world)
+	//    and attenuation = bsdf.evaluate(out_local, in_local) (handout §6.2).
+	// 4. Spaces: the BSDF takes and returns LOCAL directions (normal +y), the lights WORLD ones;
+	//    convert with `frame`, and return a unit world-space direction (handout §6.3).
+	// 5. If pdf is 0, no strategy can produce the direction: return a zero attenuation, never NaN.
 	//
-	// Starter version: BSDF sampling only.
+	// Starter version: BSDF sampling only (correct, but noisy under small lights: handout §6.1).
 	Frame frame = Frame::from_normal(hit.normal);
 	Vec3 out_local = frame.to_local(out_dir);
 	Scatter s = bsdf.scatter(rng, out_local);

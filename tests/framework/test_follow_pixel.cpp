@@ -47,13 +47,17 @@ TEST_CASE("follow_pixel shows each ray's hit, the BSDF sample and the weights", 
 	Scene scene = lit_sphere();
 	Pathtracer pathtracer(scene, small_settings());
 	std::ostringstream out;
-	follow_pixel(pathtracer, 4, 4, 1, out); // the centre pixel sees the sphere
+	follow_pixel(pathtracer, 4, 4, 4, out); // the centre pixel sees the sphere
 	std::string text = out.str();
 	INFO(text);
 	CHECK(text.find("ray depth 0: origin") != std::string::npos);
 	CHECK(text.find("dist_bounds [0, inf]") != std::string::npos);
 	CHECK(text.find("hit object 0") != std::string::npos);
-	CHECK(text.find("BSDF sample (lambertian, continuous)") != std::string::npos);
+	// Task 6 samples either the BSDF or the lights (here the environment), and evaluates both pdfs.
+	bool sampled = text.find("BSDF sample (lambertian, continuous)") != std::string::npos ||
+	               text.find("light sample (environment)") != std::string::npos;
+	CHECK(sampled);
+	CHECK(text.find("BSDF pdf(out, in") != std::string::npos);
 	CHECK(text.find("ray depth 1: origin") != std::string::npos);
 	CHECK(text.find("missed the scene (environment)") != std::string::npos);
 	// Under a uniform environment of radiance 1 the light returned by the bounce is 1, so the

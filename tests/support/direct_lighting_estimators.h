@@ -1,0 +1,38 @@
+#pragma once
+// One-sample estimates of the light a surface point reflects, for the task 6 grader. The point is a
+// hit record made by hand (no receiver geometry needed); the radiance arriving along a direction is
+// the emission of the first surface hit (or the environment), as the path tracer sees it with
+// max_depth = 1.
+#include "pathtracer.h"
+
+#include <vector>
+
+// A hit record at `position` on a surface with unit normal `normal`.
+Trace surface_point(Vec3 position, Vec3 normal);
+
+// Radiance arriving at `from` from direction `dir` (unit, world space, pointing away from `from`):
+// the emission of the closest surface along the ray towards its origin, else the environment.
+Spectrum arriving_radiance(const Scene& scene, Vec3 from, Vec3 dir);
+
+enum class Strategy {
+	bsdf,    // BSDF::scatter in the local frame, with density BSDF::pdf
+	lights,  // Pathtracer::sample_area_lights, with density area_lights_pdf
+	mixture, // Pathtracer::sample_incoming (task 6), with the density it returns
+};
+const char* to_string(Strategy strategy);
+
+// One sample of L_o = f * L_in * |cos theta| / pdf (the attenuation alone for a discrete sample; 0
+// when pdf = 0), averaged over the RGB channels.
+double reflected_radiance_sample(const Pathtracer& pt, Strategy strategy, RNG& rng, const Trace& point,
+                                 const BSDF& bsdf, Vec3 out_dir);
+
+// Mean, unbiased variance and fourth central moment of a set of samples.
+struct Sample_Moments {
+	size_t n = 0;
+	double mean = 0.0, variance = 0.0, fourth = 0.0;
+
+	double standard_error() const; // of the mean
+	// Asymptotic variance of the sample variance, (m4 - s^4) / n, for comparing two variances.
+	double variance_of_variance() const;
+};
+Sample_Moments moments(const std::vector<double>& samples);
