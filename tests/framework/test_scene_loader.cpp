@@ -11,6 +11,9 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <filesystem>
+
+#include <algorithm>
 #include <array>
 #include <fstream>
 #include <iterator>
@@ -222,8 +225,13 @@ TEST_CASE("furnace.json is a diffuse sphere of albedo 0.5 in a constant environm
 }
 
 TEST_CASE("Every shipped scene renders: a few samples of a small film are finite and not all black", "[scene]") {
-	for (const char* name : {"cornell_box", "cornell_spheres", "bunny", "dragon", "furnace"}) {
-		std::string path = std::string("scenes/") + name + ".json";
+	std::vector<std::string> paths;
+	for (const auto& entry : std::filesystem::directory_iterator("scenes")) {
+		if (entry.path().extension() == ".json") paths.push_back(entry.path().string());
+	}
+	std::sort(paths.begin(), paths.end());
+	REQUIRE(paths.size() >= 12);
+	for (const std::string& path : paths) {
 		CAPTURE(path);
 		Scene scene = load_scene(path);
 		Render_Settings settings = scene.settings;
