@@ -3,24 +3,22 @@
 #include "pathtracer.h"
 
 Ray Camera::generate_ray(Vec2 film_uv) const {
-	// TODO (Task 1, handout §1.2): the ray from the camera through film point film_uv.
-	// - film_uv (0, 0) is the top-left corner of the image, (1, 1) the bottom-right (camera.h).
-	// - In camera space the camera looks down -z and the image plane is z = -1. Its height
-	//   follows from the vertical field of view v_fov (in degrees!) and its width from
-	//   aspect_ratio: trigonometry, see the handout's figure.
-	// - Transform the point (or the direction) to world space with camera_to_world. What is the
-	//   ray's origin in world space?
-	// - Return a unit-length direction.
-	(void)film_uv;
-	return Ray{};
+	// The image plane z = -1 spans y in [-h, h] with h = tan(v_fov / 2) (the half angle seen from
+	// the pinhole) and x in [-w, w] with w = aspect_ratio * h (handout §1.2).
+	float h = std::tan(0.5f * glm::radians(v_fov));
+	float w = aspect_ratio * h;
+	// u = 0..1 runs left to right (x = -w..w); v = 0..1 runs top to bottom (y = +h..-h).
+	Vec3 on_plane{(2.0f * film_uv.x - 1.0f) * w, (1.0f - 2.0f * film_uv.y) * h, -1.0f};
+	// The pinhole is the camera-space origin; the direction is a vector (no translation).
+	Vec3 origin = transform_point(camera_to_world, Vec3{0.0f});
+	Vec3 dir = glm::normalize(transform_direction(camera_to_world, on_plane));
+	return Ray(origin, dir);
 }
 
 Spectrum Pathtracer::trace_pixel(uint32_t x, uint32_t y, RNG& rng) const {
-	// TODO (Task 1, handout §1.3): one supersampling sample of pixel (x, y).
-	// - Choose a point uniformly at random inside the pixel (rng.unit2() gives two uniform
-	//   numbers in [0, 1)); without supersampling it would be the centre (x + 0.5, y + 0.5).
-	// - Normalize it to film coordinates using settings.width and settings.height.
-	// - Generate the camera ray and return trace(rng, ray).
-	(void)x, (void)y, (void)rng;
-	return Spectrum{};
+	// Pixel (x, y) covers [x, x + 1) x [y, y + 1) in pixel units; a uniform point in it makes the
+	// average of many calls the box-filtered pixel (handout §1.3). No jitter would be offset 0.5.
+	Vec2 offset = rng.unit2();
+	Vec2 film_uv{(float(x) + offset.x) / float(settings.width), (float(y) + offset.y) / float(settings.height)};
+	return trace(rng, scene.camera.generate_ray(film_uv));
 }

@@ -6,8 +6,8 @@ Ray Camera::generate_ray(Vec2 film_uv) const {
 	// TODO (Task 1, handout §1.2): the ray from the camera through film point film_uv.
 	// - film_uv (0, 0) is the top-left corner of the image, (1, 1) the bottom-right (camera.h).
 	// - In camera space the camera looks down -z and the image plane is z = -1. Its height
-	//   follows from the vertical field of view v_fov (in degrees!) and its width from
-	//   aspect_ratio: trigonometry, see the handout's figure.
+	//   follows from the vertical field of view v_fov (the FULL angle, in degrees!) and its width
+	//   from aspect_ratio: trigonometry, see the figure in handout §1.1.
 	// - Transform the point (or the direction) to world space with camera_to_world. What is the
 	//   ray's origin in world space?
 	// - Return a unit-length direction.
@@ -20,7 +20,7 @@ Spectrum Pathtracer::trace_pixel(uint32_t x, uint32_t y, RNG& rng) const {
 	// - Choose a point uniformly at random inside the pixel (rng.unit2() gives two uniform
 	//   numbers in [0, 1)); without supersampling it would be the centre (x + 0.5, y + 0.5).
 	// - Normalize it to film coordinates using settings.width and settings.height.
-	// - Generate the camera ray and return trace(rng, ray).
+	// - Generate the camera ray with scene.camera and return trace(rng, ray).
 	(void)x, (void)y, (void)rng;
 	return Spectrum{};
 }

@@ -1,0 +1,157 @@
+// Task 1, handout §1.1-§1.2: Camera::generate_ray, the pinhole camera. Expected rays come from the
+// grader's own camera model (camera_model.h); a wrong ray is explained by the mistake it matches.
+#include "camera_model.h"
+#include "rng.h"
+
+#include <catch2/catch.hpp>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <utility>
+
+using namespace task1;
+
+namespace {
+
+Camera camera_at_origin(float v_fov, float aspect_ratio) {
+	Camera camera;
+	camera.v_fov = v_fov;
+	camera.aspect_ratio = aspect_ratio;
+	return camera;
+}
+
+// Checks generate_ray(uv) against the model; the message names the likely mistake. Returns
+// whether it passed, so that loops can stop at the first wrong ray instead of repeating it.
+bool check_ray(const Camera& camera, DVec2 uv) {
+	Ray ray = camera.generate_ray(Vec2(uv));
+	std::string problem = ray_problem(camera, uv, ray);
+	INFO("generate_ray(film_uv = (" << uv.x << ", " << uv.y << ")) with v_fov = " << camera.v_fov
+	     << " degrees, aspect_ratio = " << camera.aspect_ratio << ": " << problem);
+	CHECK(problem.empty());
+	return problem.empty();
+}
+
+// Films of several shapes: square, landscape, portrait, cinema; narrow to wide fields of view.
+const std::vector<std::pair<float, float>> FOV_AND_ASPECT{
+	{60.0f, 1.0f}, {20.0f, 4.0f / 3.0f}, {45.0f, 16.0f / 9.0f}, {90.0f, 0.5f}, {120.0f, 2.39f}, {75.0f, 0.75f}};
+
+} // namespace
+
+TEST_CASE("generate_ray: the centre of the film looks straight ahead, down -z in camera space") {
+	for (auto [fov, aspect] : FOV_AND_ASPECT) {
+		Camera camera = camera_at_origin(fov, aspect);
+		Ray ray = camera.generate_ray(Vec2{0.5f, 0.5f});
+		INFO("generate_ray(0.5, 0.5) with v_fov = " << fov << ", aspect_ratio = " << aspect << " returned point "
+		     << show(DVec3(ray.point)) << ", direction " << show(DVec3(ray.dir))
+		     << ": the centre of the film must look straight down -z from the origin (handout §1.1)");
+		bool ok = near(DVec3(ray.point), DVec3(0.0), 1e-6) &&
+		          near(DVec3(ray.dir), DVec3(0.0, 0.0, -1.0), DIRECTION_TOLERANCE);
+		CHECK(ok);
+		if (!ok) return;
+	}
+}
+
+TEST_CASE("generate_ray: corners and edges of the film follow v_fov (degrees) and aspect_ratio") {
+	// The four corners, the edge midpoints, and points off the axes. (0, 0) is the top-left corner.
+	const std::vector<DVec2> film_points{{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}, {1.0, 1.0}, {0.5, 0.0}, {0.5, 1.0},
+	                                     {0.0, 0.5}, {1.0, 0.5}, {0.2, 0.7}, {0.9, 0.15}};
+	for (auto [fov, aspect] : FOV_AND_ASPECT) {
+		Camera camera = camera_at_origin(fov, aspect);
+		for (DVec2 uv : film_points) {
+			if (!check_ray(camera, uv)) return;
+		}
+	}
+}
+
+TEST_CASE("generate_ray: the film spans exactly v_fov vertically and the aspect ratio horizontally") {
+	// A geometric restatement independent of any formula: the angle between the rays through the
+	// top and bottom edge midpoints is v_fov; between left and right it is 2 atan(aspect tan(v_fov/2)).
+	for (auto [fov, aspect] : FOV_AND_ASPECT) {
+		Camera camera = camera_at_origin(fov, aspect);
+		auto angle = [&](Vec2 a, Vec2 b) {
+			DVec3 da = glm::normalize(DVec3(camera.generate_ray(a).dir));
+			DVec3 db = glm::normalize(DVec3(camera.generate_ray(b).dir));
+			return degrees(std::acos(glm::clamp(glm::dot(da, db), -1.0, 1.0)));
+		};
+		double vertical = angle({0.5f, 0.0f}, {0.5f, 1.0f});
+		double horizontal = angle({0.0f, 0.5f}, {1.0f, 0.5f});
+		double expected_horizontal = degrees(2.0 * std::atan(aspect * std::tan(0.5 * radians(fov))));
+		INFO("v_fov = " << fov << " degrees, aspect_ratio = " << aspect << ": the rays through the top and bottom "
+		     "edges are " << vertical << " degrees apart (expected v_fov), left and right " << horizontal
+		     << " degrees (expected " << expected_horizontal << "). The plane z = -1 has half height tan(v_fov / 2) "
+		     "and half width aspect_ratio times that (handout §1.2)");
+		bool ok = std::abs(vertical - fov) < 1e-3 && std::abs(horizontal - expected_horizontal) < 1e-3;
+		CHECK(ok);
+		if (!ok) return;
+	}
+}
+
+TEST_CASE("generate_ray: film (0, 0) is up and to the left as seen by the camera") {
+	// A camera turned to look along a diagonal: "up" and "left" are the camera's, not the world's.
+	Vec3 position{1.0f, 2.0f, 3.0f}, target{-2.0f, 0.5f, -1.0f}, world_up{0.0f, 1.0f, 0.0f};
+	Camera camera = Camera::look_at(position, target, world_up, 50.0f, 1.5f);
+	DVec3 forward = glm::normalize(DVec3(target - position));
+	DVec3 right = glm::normalize(glm::cross(forward, DVec3(world_up)));
+	DVec3 up = glm::cross(right, forward);
+	struct Corner {
+		Vec2 uv;
+		double right_sign, up_sign;
+		const char* name;
+	};
+	const Corner corners[] = {{{0.0f, 0.0f}, -1.0, 1.0, "top-left"},
+	                          {{1.0f, 0.0f}, 1.0, 1.0, "top-right"},
+	                          {{0.0f, 1.0f}, -1.0, -1.0, "bottom-left"},
+	                          {{1.0f, 1.0f}, 1.0, -1.0, "bottom-right"}};
+	for (const Corner& c : corners) {
+		DVec3 dir(camera.generate_ray(c.uv).dir);
+		INFO("film_uv (" << c.uv.x << ", " << c.uv.y << ") is the " << c.name << " corner of the image: its ray must "
+		     "point " << (c.up_sign > 0 ? "up" : "down") << " and " << (c.right_sign > 0 ? "right" : "left")
+		     << " relative to where the camera looks; got " << show(dir) << ". Film v grows downwards (handout §1.1)");
+		CHECK(glm::dot(dir, forward) > 0.0);
+		CHECK(c.right_sign * glm::dot(dir, right) > 0.0);
+		CHECK(c.up_sign * glm::dot(dir, up) > 0.0);
+	}
+}
+
+TEST_CASE("generate_ray: directions are unit length and dist_bounds is [0, inf)") {
+	Camera camera = Camera::look_at(Vec3{0.0f, 1.0f, 4.0f}, Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f}, 70.0f, 16.0f / 9.0f);
+	RNG rng(11);
+	size_t wrong_length = 0, wrong_bounds = 0;
+	for (int i = 0; i < 1000; i++) {
+		Ray ray = camera.generate_ray(rng.unit2());
+		if (!(std::abs(glm::length(DVec3(ray.dir)) - 1.0) <= DIRECTION_TOLERANCE)) wrong_length++;
+		if (!(ray.dist_bounds.x == 0.0f && ray.dist_bounds.y == INF_F && ray.depth == 0)) wrong_bounds++;
+	}
+	INFO(wrong_length << " of 1000 camera rays do not have a unit-length direction: normalize it after the "
+	     "transformation to world space (handout §1.2)");
+	CHECK(wrong_length == 0);
+	INFO(wrong_bounds << " of 1000 camera rays do not have dist_bounds = [0, inf) and depth 0: construct the Ray "
+	     "from just a point and a direction (camera.h)");
+	CHECK(wrong_bounds == 0);
+}
+
+TEST_CASE("generate_ray: camera_to_world moves the origin to the camera and rotates the directions") {
+	SECTION("a camera made by look_at looks at its target") {
+		Vec3 position{3.0f, -2.0f, 5.0f}, target{0.0f, 1.0f, -1.0f};
+		Camera camera = Camera::look_at(position, target, Vec3{0.0f, 1.0f, 0.0f}, 40.0f, 1.25f);
+		Ray centre = camera.generate_ray(Vec2{0.5f, 0.5f});
+		DVec3 to_target = glm::normalize(DVec3(target - position));
+		INFO("the centre of the film must look from the camera position " << show(DVec3(position))
+		     << " straight at the target, direction " << show(to_target) << "; got point "
+		     << show(DVec3(centre.point)) << ", direction " << show(DVec3(centre.dir))
+		     << ". Apply camera_to_world to the origin and the direction (handout §1.2)");
+		CHECK(near(DVec3(centre.point), DVec3(position), 1e-5));
+		CHECK(near(DVec3(centre.dir), to_target, DIRECTION_TOLERANCE));
+		for (DVec2 uv : {DVec2{0.0, 0.0}, DVec2{1.0, 0.25}, DVec2{0.3, 1.0}, DVec2{0.75, 0.6}}) {
+			if (!check_ray(camera, uv)) return;
+		}
+	}
+	SECTION("a camera_to_world matrix set directly (rotation and translation)") {
+		Camera camera = camera_at_origin(65.0f, 0.8f);
+		Mat4 rotation = glm::rotate(Mat4{1.0f}, 2.0f, glm::normalize(Vec3{1.0f, -2.0f, 0.5f}));
+		camera.camera_to_world = glm::translate(Mat4{1.0f}, Vec3{-4.0f, 7.5f, 2.0f}) * rotation;
+		for (DVec2 uv : {DVec2{0.5, 0.5}, DVec2{0.0, 0.0}, DVec2{1.0, 1.0}, DVec2{0.1, 0.8}, DVec2{0.6, 0.05}}) {
+			if (!check_ray(camera, uv)) return;
+		}
+	}
+}
