@@ -1,5 +1,7 @@
 #include "film_statistics.h"
 
+#include <catch2/catch.hpp>
+
 #include <cmath>
 #include <sstream>
 
@@ -52,4 +54,17 @@ Mean_Check compare_mean(const Film& film, int channel, double expected, double z
 	if (m.pixels == 0) s << " [no pixel selected: the test itself is wrong]";
 	check.message = s.str();
 	return check;
+}
+
+const char* channel_name(int channel) {
+	constexpr const char* names[3] = {"red", "green", "blue"};
+	return names[channel];
+}
+
+void check_mean(const Film& film, int channel, double expected, double z_critical, const std::string& what,
+                const std::function<bool(uint32_t, uint32_t)>& select) {
+	Mean_Check check =
+		compare_mean(film, channel, expected, z_critical, what + ", " + channel_name(channel) + " channel", select);
+	INFO(check.message);
+	CHECK(check.pass);
 }

@@ -38,3 +38,10 @@ struct Mean_Check {
 Mean_Check compare_mean(const Film& film, int channel, double expected, double z_critical, const std::string& what,
                         const std::function<bool(uint32_t, uint32_t)>& select =
                         	[](uint32_t, uint32_t) { return true; });
+
+// "red", "green" or "blue".
+const char* channel_name(int channel);
+
+// compare_mean as a Catch2 check: the message says what was measured, expected and allowed.
+void check_mean(const Film& film, int channel, double expected, double z_critical, const std::string& what,
+                const std::function<bool(uint32_t, uint32_t)>& select = [](uint32_t, uint32_t) { return true; });

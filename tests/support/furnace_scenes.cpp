@@ -1,4 +1,5 @@
 #include "furnace_scenes.h"
+#include "render.h"
 
 #include <algorithm>
 #include <cmath>
@@ -79,4 +80,13 @@ Material glass_material(Spectrum reflectance, Spectrum transmittance, float inde
 	Material m;
 	m.bsdf = BSDF(BSDF_Glass{reflectance, transmittance, index_of_refraction});
 	return m;
+}
+
+Film render_square(const Scene& scene, uint32_t size, uint32_t spp, uint32_t max_depth, uint64_t seed) {
+	Render_Settings settings;
+	settings.width = settings.height = size;
+	settings.samples = spp;
+	settings.max_depth = max_depth;
+	settings.seed = seed;
+	return render(Pathtracer(scene, settings));
 }

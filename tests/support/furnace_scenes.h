@@ -8,6 +8,7 @@
 //   tan(asin(radius / distance)) around the centre of the film. Pixel_Coverage classifies pixels
 //   by that disc, independently of the task-1 code.
 // - from INSIDE: the camera sits inside the sphere, so every camera ray hits it.
+#include "film.h"
 #include "scene.h"
 
 #include <string>
@@ -54,3 +55,6 @@ const char* to_string(Pixel_Coverage::Kind kind);
 Material diffuse_material(Spectrum albedo, Spectrum emission = Spectrum{0.0f});
 Material mirror_material(Spectrum reflectance);
 Material glass_material(Spectrum reflectance, Spectrum transmittance, float index_of_refraction);
+
+// Renders `scene` on a square film of size x size pixels with the reference pipeline (render()).
+Film render_square(const Scene& scene, uint32_t size, uint32_t spp, uint32_t max_depth, uint64_t seed);

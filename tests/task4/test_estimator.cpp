@@ -22,30 +22,11 @@ namespace {
 constexpr size_t Z_TESTS = 72; // 27 + 24 + 18 + 3, counted per TEST_CASE below
 const double Z = stats::two_sided_z(stats::sidak(0.01, Z_TESTS));
 
-const char* CHANNEL[3] = {"red", "green", "blue"};
-
-Film render_scene(const Scene& scene, uint32_t size, uint32_t spp, uint32_t max_depth, uint64_t seed) {
-	Render_Settings settings;
-	settings.width = settings.height = size;
-	settings.samples = spp;
-	settings.max_depth = max_depth;
-	settings.seed = seed;
-	Pathtracer pathtracer(scene, settings);
-	return render(pathtracer);
-}
 
 void require_finite(const Film& film) {
 	INFO(film.non_finite() << " samples were NaN or infinite (render with --nan-map to see where). Look for "
 	     "divisions by a pdf of 0 and for weights of directions that cannot be sampled (handout §4.2)");
 	REQUIRE(film.non_finite() == 0);
-}
-
-// The z-test of one channel's mean over the selected pixels; counts towards Z_TESTS.
-void check_mean(const Film& film, int channel, double expected, const std::string& what,
-                const std::function<bool(uint32_t, uint32_t)>& select = [](uint32_t, uint32_t) { return true; }) {
-	Mean_Check check = compare_mean(film, channel, expected, Z, what + ", " + CHANNEL[channel] + " channel", select);
-	INFO(check.message);
-	CHECK(check.pass);
 }
 
 } // namespace
@@ -59,14 +40,14 @@ TEST_CASE("Furnace: a white diffuse sphere in a uniform environment renders the 
 	Pixel_Coverage coverage(1.0f, distance, fov, size, size);
 	for (uint32_t depth : {1u, 2u, 8u}) {
 		CAPTURE(depth);
-		Film film = render_scene(scene, size, 256, depth, 41 + depth);
+		Film film = render_square(scene, size, 256, depth, 41 + depth);
 		require_finite(film);
 		for (auto kind : {Pixel_Coverage::sphere, Pixel_Coverage::silhouette, Pixel_Coverage::background}) {
 			std::string what = std::string("max_depth ") + std::to_string(depth) + ", mean of the " + to_string(kind) +
 			                   " (albedo 1 under L = 1 neither gains nor loses light: each bounce's weight "
 			                   "f |cos| / pdf is 1, handout §4.2)";
 			auto select = [&](uint32_t x, uint32_t y) { return coverage(x, y) == kind; };
-			for (int c = 0; c < 3; c++) check_mean(film, c, 1.0, what, select);
+			for (int c = 0; c < 3; c++) check_mean(film, c, 1.0, Z, what, select);
 		}
 	}
 }
@@ -87,7 +68,7 @@ TEST_CASE("Furnace: a diffuse sphere of albedo rho under a uniform sky L renders
 	auto on_sky = [&](uint32_t x, uint32_t y) { return coverage(x, y) == Pixel_Coverage::background; };
 	for (uint32_t depth : {0u, 1u, 2u, 5u}) {
 		CAPTURE(depth);
-		Film film = render_scene(scene, size, 256, depth, 7 + depth);
+		Film film = render_square(scene, size, 256, depth, 7 + depth);
 		require_finite(film);
 		std::string prefix = "max_depth " + std::to_string(depth) + ", mean of the ";
 		for (int c = 0; c < 3; c++) {
@@ -95,8 +76,8 @@ TEST_CASE("Furnace: a diffuse sphere of albedo rho under a uniform sky L renders
 			std::string why = depth == 0 ? " (max_depth 0: the camera ray's hit may not scatter, so a "
 			                               "non-emitting surface is black)"
 			                             : " (rho * L: one bounce reaches the sky)";
-			check_mean(film, c, expected, prefix + to_string(Pixel_Coverage::sphere) + why, on_sphere);
-			check_mean(film, c, sky[c], prefix + to_string(Pixel_Coverage::background), on_sky);
+			check_mean(film, c, expected, Z, prefix + to_string(Pixel_Coverage::sphere) + why, on_sphere);
+			check_mean(film, c, sky[c], Z, prefix + to_string(Pixel_Coverage::background), on_sky);
 		}
 	}
 }
@@ -115,13 +96,13 @@ TEST_CASE("Furnace: inside an emitting diffuse sphere, max_depth D gives Le * (1
 	Scene scene = sphere_seen_from_inside(diffuse_material(rho, le), options, eye, target, 70.0f);
 	for (uint32_t depth : {0u, 1u, 2u, 3u, 5u, 40u}) {
 		CAPTURE(depth);
-		Film film = render_scene(scene, 24, 128, depth, 100 + depth);
+		Film film = render_square(scene, 24, 128, depth, 100 + depth);
 		require_finite(film);
 		for (int c = 0; c < 3; c++) {
 			double sum = 0.0, power = 1.0;
 			for (uint32_t k = 0; k <= depth; k++, power *= rho[c]) sum += power;
 			double expected = le[c] * sum;
-			check_mean(film, c, expected,
+			check_mean(film, c, expected, Z,
 			           "max_depth " + std::to_string(depth) + ": image mean, expected Le * sum_{k=0.." +
 			               std::to_string(depth) + "} rho^k (emission of every hit, attenuated by rho per bounce; "
 			               "max_depth counts bounces, handout §4.2)");
@@ -138,7 +119,7 @@ TEST_CASE("Furnace: a scene without emitters or environment renders exactly 0") 
 	Scene inside =
 		sphere_seen_from_inside(diffuse_material(Spectrum{0.9f}), dark, Vec3{0.1f}, Vec3{0.0f, 0.0f, -1.0f}, 60.0f);
 	for (const Scene* scene : {&outside, &inside}) {
-		Film film = render_scene(*scene, 16, 16, 8, 3);
+		Film film = render_square(*scene, 16, 16, 8, 3);
 		require_finite(film);
 		double largest = 0.0;
 		for (const Pixel_Stats& p : film.pixels) largest = std::max({largest, p.mean.x, p.mean.y, p.mean.z});
@@ -162,10 +143,10 @@ TEST_CASE("Furnace far from the origin: new rays must leave their surface at any
 	Scene scene = sphere_seen_from_outside(diffuse_material(rho), options, distance, fov);
 	Pixel_Coverage coverage(1.0f, distance, fov, size, size);
 	auto on_sphere = [&](uint32_t x, uint32_t y) { return coverage(x, y) == Pixel_Coverage::sphere; };
-	Film film = render_scene(scene, size, 256, 2, 5);
+	Film film = render_square(scene, size, 256, 2, 5);
 	require_finite(film);
 	for (int c = 0; c < 3; c++) {
-		check_mean(film, c, rho[c], "sphere centred at (1e4, -1e4, 1e4), mean of the " +
+		check_mean(film, c, rho[c], Z, "sphere centred at (1e4, -1e4, 1e4), mean of the " +
 		                                std::string(to_string(Pixel_Coverage::sphere)) + " (expected rho * L_env)",
 		           on_sphere);
 	}

@@ -1,6 +1,7 @@
 // Task 5, handouts §5.1 and §5.4: BSDF_Mirror and BSDF_Glass scatter (material.h). Both are
 // discrete: Scatter::attenuation is the whole weight of the sample.
 #include "material.h"
+#include "directions.h"
 #include "statistics.h"
 
 #include <catch2/catch.hpp>
@@ -9,19 +10,11 @@
 #include <string>
 
 namespace {
+using task5::direction;
+using task5::str;
+using task5::PI;
 
-constexpr double PI = 3.14159265358979323846;
 const Spectrum REFLECTANCE{0.9f, 0.8f, 0.7f}, TRANSMITTANCE{0.6f, 0.5f, 0.4f};
-
-Vec3 direction(double theta_degrees, double phi, bool below = false) {
-	double t = theta_degrees * PI / 180.0;
-	double y = below ? -std::cos(t) : std::cos(t);
-	return Vec3{float(std::sin(t) * std::cos(phi)), float(y), float(std::sin(t) * std::sin(phi))};
-}
-
-std::string str(Vec3 v) {
-	return "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + ")";
-}
 
 bool same(Spectrum a, Spectrum b) {
 	return glm::length(a - b) <= 1e-6f * glm::length(b);

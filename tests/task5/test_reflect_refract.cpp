@@ -1,6 +1,7 @@
 // Task 5, handout §5.1-§5.2: reflect and refract in the local frame (normal +y; out_dir and the
 // returned in_dir both point away from the surface). Expected directions are computed here in
 // double precision from the law of reflection and Snell's law.
+#include "directions.h"
 #include "material.h"
 
 #include <catch2/catch.hpp>
@@ -9,20 +10,11 @@
 #include <string>
 
 namespace {
+using task5::direction;
+using task5::str;
+using task5::PI;
 
-constexpr double PI = 3.14159265358979323846;
 constexpr float IOR = 1.5f;
-
-// The unit direction at polar angle theta (degrees) from +y (or from -y when below) and azimuth phi.
-Vec3 direction(double theta_degrees, double phi, bool below = false) {
-	double t = theta_degrees * PI / 180.0;
-	double y = below ? -std::cos(t) : std::cos(t);
-	return Vec3{float(std::sin(t) * std::cos(phi)), float(y), float(std::sin(t) * std::sin(phi))};
-}
-
-std::string str(Vec3 v) {
-	return "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + ")";
-}
 
 // Snell's law for the lab's convention: out_dir outside (y > 0) is in vacuum and in_dir inside
 // (index IOR), or the reverse. Returns false on total internal reflection.
