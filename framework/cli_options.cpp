@@ -207,6 +207,11 @@ Render_Settings override_settings(Render_Settings settings, const Cli_Options& o
 	settings.height = options.height.value_or(settings.height);
 	settings.max_depth = options.max_depth.value_or(settings.max_depth);
 	settings.seed = options.seed.value_or(settings.seed);
+	if (uint64_t(settings.width) * settings.height > Render_Settings::MAX_PIXELS) {
+		throw Input_Error("--width/--height: expected at most " + std::to_string(Render_Settings::MAX_PIXELS) +
+		                  " pixels (e.g. 4096 x 4096), got " + std::to_string(settings.width) + " x " +
+		                  std::to_string(settings.height));
+	}
 	return settings;
 }
 

@@ -25,7 +25,8 @@ struct Cli_Options {
 // args as in argv (args[0] is the program name). Throws Input_Error naming the bad option/value.
 Cli_Options parse_cli_options(const std::vector<std::string>& args);
 
-// The scene's settings with the command line's overrides.
+// The scene's settings with the command line's overrides. Throws Input_Error for a film larger than
+// Render_Settings::MAX_PIXELS.
 Render_Settings override_settings(Render_Settings settings, const Cli_Options& options);
 
 // --help: whether it was asked for, and the text.

@@ -13,6 +13,10 @@
 #include <vector>
 
 struct Render_Settings {
+	// The largest film the loader and the command line accept (4096 x 4096 pixels), so a typo
+	// cannot exhaust memory.
+	static constexpr uint64_t MAX_PIXELS = 4096 * 4096;
+
 	uint32_t width = 256;
 	uint32_t height = 256;
 	uint32_t samples = 16;   // samples per pixel

@@ -14,7 +14,7 @@ namespace {
 
 // Limits that keep a mistyped film from exhausting memory or the path tracer's stack.
 constexpr uint64_t MAX_FILM_SIDE = 16384;
-constexpr uint64_t MAX_FILM_PIXELS = 4096 * 4096;
+constexpr uint64_t MAX_FILM_PIXELS = Render_Settings::MAX_PIXELS;
 constexpr uint64_t MAX_DEPTH = 1000;
 constexpr uint64_t MAX_SAMPLES = 1000000; // the same limits as the command line
 
