@@ -1,0 +1,82 @@
+#include "graded_images.h"
+
+#include "error.h"
+#include "image_io.h"
+#include "scene_loader.h"
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+const std::vector<Graded_Scene>& graded_scenes() {
+	static const std::vector<Graded_Scene> scenes{
+		{"eye_bunny", View::eye_light},        // tasks 1-3
+		{"cornell_diffuse", View::path},       // task 4
+		{"glass_balls", View::path},           // task 5
+		{"cornell_small_light", View::path},   // task 6
+		{"env_overcast", View::path},          // task 7
+	};
+	return scenes;
+}
+
+const Graded_Scene& graded_scene(const std::string& name) {
+	for (const Graded_Scene& scene : graded_scenes()) {
+		if (scene.name == name) return scene;
+	}
+	throw Input_Error("no graded scene named '" + name + "' (see tests/support/graded_images.cpp)");
+}
+
+std::string graded_scene_file(const std::string& name) {
+	return "scenes/graded/" + name + ".json";
+}
+
+std::string reference_file(const std::string& name, const std::string& suffix) {
+	return "scenes/graded/references/" + name + suffix;
+}
+
+Scene load_graded(const Graded_Scene& graded) {
+	return load_scene(graded_scene_file(graded.name));
+}
+
+Film render_graded(const Graded_Scene& graded, const Scene& scene, uint32_t samples, uint64_t seed,
+                   const Render_Options& options) {
+	Render_Settings settings = scene.settings;
+	settings.samples = samples;
+	settings.seed = seed;
+	Pathtracer pathtracer(scene, settings, graded.view);
+	return render(pathtracer, options);
+}
+
+Image_Estimate read_reference(const Graded_Scene& scene, const Render_Settings& grader) {
+	std::string record_file = reference_file(scene.name, ".json");
+	std::ifstream in(record_file);
+	if (!in) throw Input_Error(record_file + ": missing; run `./lab references` to make the reference images");
+	nlohmann::json record = nlohmann::json::parse(in);
+	if (record.at("view") != view_name(scene.view) || record.at("width") != grader.width ||
+	    record.at("height") != grader.height || record.at("max_depth") != grader.max_depth) {
+		throw Input_Error(record_file + ": made with other settings than " + graded_scene_file(scene.name) +
+		                  " now has; run `./lab references`");
+	}
+	return Image_Estimate::uniform(read_image(reference_file(scene.name, "_mean.exr")),
+	                               read_image(reference_file(scene.name, "_var.exr")), record.at("spp"));
+}
+
+void write_reference(const Graded_Scene& scene, const Film& film, const Render_Settings& settings) {
+	write_exr(reference_file(scene.name, "_mean.exr"), film.mean());
+	write_exr(reference_file(scene.name, "_var.exr"), film.variance());
+	nlohmann::ordered_json record{{"scene", graded_scene_file(scene.name)}, {"view", view_name(scene.view)},
+	                              {"width", film.w}, {"height", film.h},
+	                              {"max_depth", settings.max_depth}, {"spp", settings.samples},
+	                              {"seed", settings.seed},
+	                              {"made_by", "./lab references (tests/images/make_references.cpp)"}};
+	std::ofstream(reference_file(scene.name, ".json")) << record.dump(1, '\t') << "\n";
+}
+
+Reference_Check check_against_reference(const Graded_Scene& scene, std::optional<uint64_t> seed) {
+	Render_Options options;
+	options.threads = 2;
+	Scene loaded = load_graded(scene);
+	uint64_t render_seed = seed.value_or(loaded.settings.seed);
+	Film film = render_graded(scene, loaded, loaded.settings.samples, render_seed, options);
+	return Reference_Check{compare_images(Image_Estimate::from(film), read_reference(scene, loaded.settings)),
+	                       film.non_finite()};
+}

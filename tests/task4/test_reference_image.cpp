@@ -1,0 +1,19 @@
+// Task 4 grader, reference image: the diffuse Cornell box, path traced, 64 samples per pixel, at
+// most 5 bounces.
+// The render is compared with the stored reference pixel by pixel, by a z-test that knows the noise
+// of both (tests/support/image_compare.h); scenes/graded/references/ holds the reference.
+#include "graded_images.h"
+
+#include <catch2/catch.hpp>
+
+TEST_CASE("the graded scene cornell_diffuse renders like its reference image",
+          "[task4][image][statistical]") {
+	const Graded_Scene& scene = graded_scene("cornell_diffuse");
+	Reference_Check check = check_against_reference(scene);
+	INFO("scenes/graded/cornell_diffuse.json: " << check.comparison.message);
+	INFO("Too dark or too bright: check the estimator f * |cos| / pdf (handout §4.2) and that the "
+	     "Lambertian BSDF, its sampling and its pdf agree (handout §4.1). Render it: ./lab render-"
+	     "student scenes/graded/cornell_diffuse.json");
+	CHECK(check.non_finite == 0);
+	CHECK(check.comparison.pass);
+}

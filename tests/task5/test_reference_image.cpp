@@ -1,0 +1,20 @@
+// Task 5 grader, reference image: a large glass ball and a small mirror ball under an overcast sky,
+// path traced, 64 samples per pixel. Near the glass ball's rim Fresnel reflection shows the sky and
+// refraction the ground.
+// The render is compared with the stored reference pixel by pixel, by a z-test that knows the noise
+// of both (tests/support/image_compare.h); scenes/graded/references/ holds the reference.
+#include "graded_images.h"
+
+#include <catch2/catch.hpp>
+
+TEST_CASE("the graded scene glass_balls renders like its reference image",
+          "[task5][image][statistical]") {
+	const Graded_Scene& scene = graded_scene("glass_balls");
+	Reference_Check check = check_against_reference(scene);
+	INFO("scenes/graded/glass_balls.json: " << check.comparison.message);
+	INFO("The glass ball must both reflect (with probability F) and refract (handout §5.2, §5.3), "
+	     "the mirror reflect about the normal (handout §5.1). Render it: ./lab render-student "
+	     "scenes/graded/glass_balls.json");
+	CHECK(check.non_finite == 0);
+	CHECK(check.comparison.pass);
+}

@@ -1,0 +1,19 @@
+// Task 6 grader, reference image: the Cornell box with two spheres and a small, bright light, path
+// traced with the mixture of BSDF and light sampling.
+// The render is compared with the stored reference pixel by pixel, by a z-test that knows the noise
+// of both (tests/support/image_compare.h); scenes/graded/references/ holds the reference.
+#include "graded_images.h"
+
+#include <catch2/catch.hpp>
+
+TEST_CASE("the graded scene cornell_small_light renders like its reference image",
+          "[task6][image][statistical]") {
+	const Graded_Scene& scene = graded_scene("cornell_small_light");
+	Reference_Check check = check_against_reference(scene);
+	INFO("scenes/graded/cornell_small_light.json: " << check.comparison.message);
+	INFO("The mixture's pdf must be 1/2 p_bsdf + 1/2 p_lights for EVERY direction, whichever "
+	     "strategy drew it (handout §6.2). Render it: ./lab render-student "
+	     "scenes/graded/cornell_small_light.json");
+	CHECK(check.non_finite == 0);
+	CHECK(check.comparison.pass);
+}

@@ -1,0 +1,19 @@
+// Task 7 grader, reference image: a diffuse sphere on a floor under an overcast HDR sky, with
+// environment importance sampling.
+// The render is compared with the stored reference pixel by pixel, by a z-test that knows the noise
+// of both (tests/support/image_compare.h); scenes/graded/references/ holds the reference.
+#include "graded_images.h"
+
+#include <catch2/catch.hpp>
+
+TEST_CASE("the graded scene env_overcast renders like its reference image",
+          "[task7][image][statistical]") {
+	const Graded_Scene& scene = graded_scene("env_overcast");
+	Reference_Check check = check_against_reference(scene);
+	INFO("scenes/graded/env_overcast.json: " << check.comparison.message);
+	INFO("Check that Env_Map::pdf converts the density over the image to solid angle with the "
+	     "Jacobian 2 pi^2 sin(theta) (handout §7.4) and agrees with sample. Render it: ./lab "
+	     "render-student scenes/graded/env_overcast.json");
+	CHECK(check.non_finite == 0);
+	CHECK(check.comparison.pass);
+}
