@@ -2,6 +2,7 @@
 #include "bbox.h"
 #include "trace.h"
 
+#include <cstdint>
 #include <vector>
 
 // Bounding volume hierarchy over primitives that have `BBox bbox() const` and
@@ -46,4 +47,18 @@ public:
 	std::vector<Primitive> primitives;
 	std::vector<Node> nodes;
 	size_t root_idx = 0;
+
+	// Traversal data: NOT part of Task 3 (your build() may leave flat_pairs empty; your hit() need
+	// not use it). The reference build() fills it from `nodes`, and its hit() traverses it
+	// instead: the same tree, laid out for speed (bench/README.md).
+	struct Flat_Node { // 32 bytes
+		Vec3 min;
+		uint32_t first; // interior: its children are flat_pairs[first]; leaf: its first primitive
+		Vec3 max;
+		uint32_t count; // leaf: number of primitives (>= 1); 0: interior node
+	};
+	struct alignas(64) Flat_Pair { // two siblings, in one 64-byte cache line
+		Flat_Node child[2];
+	};
+	std::vector<Flat_Pair> flat_pairs; // flat_pairs[0].child[0] is the root; empty without primitives
 };

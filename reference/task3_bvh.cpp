@@ -8,28 +8,36 @@
 
 namespace {
 
-// A ray prepared for many slab tests: the reciprocal direction is computed once per ray.
+// A ray prepared for many slab tests: the reciprocal direction and its signs are computed once per ray.
 struct Slab_Ray {
 	explicit Slab_Ray(const Ray& ray) : point(ray.point), inv_dir(1.0f / ray.dir) {
+		for (int axis = 0; axis < 3; axis++) negative[axis] = inv_dir[axis] < 0.0f;
 	}
 	Vec3 point;
 	Vec3 inv_dir; // +-inf where a direction component is +-0
+	bool negative[3];
 };
 
-// Slab test (handout §3.1). On each axis the ray lies between the planes min and max for t in
-// [(min - o) / d, (max - o) / d], ends swapped when d < 0; the box is hit where all three slabs
-// and `times` overlap. Comparisons are <=, so flat boxes (min == max) are hit.
-bool slab_test(const BBox& box, const Slab_Ray& ray, Vec2& times) {
+// One slab of the slab test: narrows [t_enter, t_exit] to where the ray lies between the planes lo
+// and hi of one axis, t in [(lo - o) / d, (hi - o) / d], ends swapped when d < 0. When d = 0 and the
+// origin lies on a plane, 0 * inf = NaN: a NaN fails the comparison, so it leaves the interval
+// unchanged (the ray runs inside that plane).
+[[gnu::always_inline]] inline void narrow(float lo, float hi, float point, float inv_dir, bool negative,
+                                          float& t_enter, float& t_exit) {
+	float t_lo = (lo - point) * inv_dir, t_hi = (hi - point) * inv_dir;
+	float t_near = negative ? t_hi : t_lo, t_far = negative ? t_lo : t_hi;
+	t_enter = t_near > t_enter ? t_near : t_enter;
+	t_exit = t_far < t_exit ? t_far : t_exit;
+}
+
+// Slab test (handout §3.1): the box is hit where all three slabs and `times` overlap. Comparisons
+// are <=, so flat boxes (min == max) are hit. Written out per axis and inlined, since traversal
+// spends much of its time here (it was a third of the time as an out-of-line loop).
+[[gnu::always_inline]] inline bool slab_test(Vec3 min, Vec3 max, const Slab_Ray& ray, Vec2& times) {
 	float t_enter = times.x, t_exit = times.y;
-	for (int axis = 0; axis < 3; axis++) {
-		float t_near = (box.min[axis] - ray.point[axis]) * ray.inv_dir[axis];
-		float t_far = (box.max[axis] - ray.point[axis]) * ray.inv_dir[axis];
-		if (ray.inv_dir[axis] < 0.0f) std::swap(t_near, t_far);
-		// When d = 0 and the origin lies on a plane, 0 * inf = NaN: a NaN fails the comparison,
-		// so it leaves the interval unchanged (the ray runs inside that plane).
-		t_enter = t_near > t_enter ? t_near : t_enter;
-		t_exit = t_far < t_exit ? t_far : t_exit;
-	}
+	narrow(min.x, max.x, ray.point.x, ray.inv_dir.x, ray.negative[0], t_enter, t_exit);
+	narrow(min.y, max.y, ray.point.y, ray.inv_dir.y, ray.negative[1], t_enter, t_exit);
+	narrow(min.z, max.z, ray.point.z, ray.inv_dir.z, ray.negative[2], t_enter, t_exit);
 	if (!(t_enter <= t_exit)) return false;
 	times = Vec2{t_enter, t_exit};
 	return true;
@@ -108,10 +116,44 @@ Split best_split(const Build_Item* begin, const Build_Item* end, const BBox& cen
 	return best;
 }
 
+// --- Traversal data (bench/README.md). The tree above is the lab's; build() then copies it into
+// BVH::flat_pairs, which hit() traverses. Measured with bench/bvh_bench (Stanford bunny, one thread,
+// ratio to Embree in the same run, medians of 5; primary / incoherent / occlusion): the traversal of
+// `nodes` with a std::vector stack 0.33 / 0.23 / 0.17; with 32-byte nodes, siblings in one cache
+// line, the slab test inlined and a stack indexed in place 0.55 / 0.30 / 0.24. (Precomputed
+// triangles, testing only t and making one Trace at the end, bought nothing measurable on top, so
+// they were left out; so was prefetching the far child.)
+
+// Copies the tree into pairs of flat nodes, depth first: the root alone in pair 0, then the
+// children of each interior node side by side in a pair of their own.
+template<typename Node, typename Flat_Pair>
+std::vector<Flat_Pair> flatten(const std::vector<Node>& nodes, size_t root_idx) {
+	std::vector<Flat_Pair> pairs(1);
+	pairs.reserve(nodes.size() / 2 + 1);
+	struct Todo {
+		size_t node, pair;
+		int child;
+	};
+	std::vector<Todo> todo{{root_idx, 0, 0}};
+	while (!todo.empty()) {
+		Todo item = todo.back();
+		todo.pop_back();
+		const Node& node = nodes[item.node];
+		auto& out = pairs[item.pair].child[item.child];
+		out = {node.bbox.min, uint32_t(node.start), node.bbox.max, uint32_t(node.size)};
+		if (node.is_leaf()) continue;
+		out.first = uint32_t(pairs.size()), out.count = 0; // (`out` is not used after the next line)
+		pairs.emplace_back();
+		todo.push_back(Todo{node.r, pairs.size() - 1, 1});
+		todo.push_back(Todo{node.l, pairs.size() - 1, 0});
+	}
+	return pairs;
+}
+
 } // namespace
 
 bool BBox::hit(const Ray& ray, Vec2& times) const {
-	return slab_test(*this, Slab_Ray(ray), times);
+	return slab_test(min, max, Slab_Ray(ray), times);
 }
 
 template<typename Primitive> void BVH<Primitive>::build(std::vector<Primitive>&& prims, size_t max_leaf_size) {
@@ -158,51 +200,59 @@ template<typename Primitive> void BVH<Primitive>::build(std::vector<Primitive>&&
 	primitives.clear();
 	primitives.reserve(items.size());
 	for (const Build_Item& item : items) primitives.push_back(std::move(prims[item.index]));
+
+	flat_pairs.clear();
+	if (!primitives.empty()) flat_pairs = flatten<Node, Flat_Pair>(nodes, root_idx);
 }
 
 template<typename Primitive> Trace BVH<Primitive>::hit(const Ray& ray) const {
-	// Front to back (handout §3.3): an explicit stack of nodes still to visit, each with the t at
-	// which the ray enters its box. The nearer child is pushed last, so it is visited first.
+	// Front to back (handout §3.3) over flat_pairs: go down into the nearer child and keep the
+	// farther one on a stack, with the t at which the ray enters its box.
 	struct Entry {
-		size_t node;
+		const Flat_Node* node;
 		float t_enter;
 	};
 	// One stack per thread, reused by every ray (BVH<Triangle> and BVH<Instance> each have their
-	// own, so a mesh traversed from inside the scene's traversal does not disturb it).
-	thread_local std::vector<Entry> stack;
-	stack.clear();
+	// own, so a mesh traversed from inside the scene's traversal does not disturb it). It only
+	// grows: a push checks the size, a pop is an index decrement.
+	thread_local std::vector<Entry> stack(64);
+	size_t top = 0;
 
-	Trace closest;
 	Ray r = ray; // r.dist_bounds.y shrinks to the closest hit found so far
 	Slab_Ray slab_ray(ray);
+	Trace closest;
 	Vec2 times = r.dist_bounds;
-	if (nodes.empty() || !slab_test(nodes[root_idx].bbox, slab_ray, times)) return closest;
-	stack.push_back(Entry{root_idx, times.x});
+	if (flat_pairs.empty()) return closest;
+	const Flat_Node* node = &flat_pairs[0].child[0];
+	if (!slab_test(node->min, node->max, slab_ray, times)) return closest;
 
-	while (!stack.empty()) {
-		Entry entry = stack.back();
-		stack.pop_back();
-		if (entry.t_enter > r.dist_bounds.y) continue; // a closer hit was found since it was pushed
-		const Node& node = nodes[entry.node];
-		if (node.is_leaf()) {
-			for (size_t i = node.start; i < node.start + node.size; i++) {
+	while (true) {
+		if (node->count > 0) {
+			for (size_t i = node->first; i < node->first + node->count; i++) {
 				closest = Trace::min(closest, primitives[i].hit(r));
 				if (closest.hit) r.dist_bounds.y = closest.distance;
 			}
-			continue;
+		} else {
+			const Flat_Node *left = &flat_pairs[node->first].child[0], *right = left + 1;
+			Vec2 times_l = r.dist_bounds, times_r = r.dist_bounds;
+			bool hit_l = slab_test(left->min, left->max, slab_ray, times_l);
+			bool hit_r = slab_test(right->min, right->max, slab_ray, times_r);
+			if (hit_l && hit_r) {
+				bool left_first = times_l.x <= times_r.x;
+				if (top == stack.size()) stack.resize(2 * top);
+				stack[top++] = left_first ? Entry{right, times_r.x} : Entry{left, times_l.x};
+				node = left_first ? left : right;
+				continue;
+			}
+			if (hit_l || hit_r) {
+				node = hit_l ? left : right;
+				continue;
+			}
 		}
-		Vec2 times_l = r.dist_bounds, times_r = r.dist_bounds;
-		bool hit_l = slab_test(nodes[node.l].bbox, slab_ray, times_l);
-		bool hit_r = slab_test(nodes[node.r].bbox, slab_ray, times_r);
-		if (hit_l && hit_r) {
-			bool left_first = times_l.x <= times_r.x;
-			stack.push_back(left_first ? Entry{node.r, times_r.x} : Entry{node.l, times_l.x});
-			stack.push_back(left_first ? Entry{node.l, times_l.x} : Entry{node.r, times_r.x});
-		} else if (hit_l) {
-			stack.push_back(Entry{node.l, times_l.x});
-		} else if (hit_r) {
-			stack.push_back(Entry{node.r, times_r.x});
-		}
+		// Pop the nearest pending node that still starts before the closest hit.
+		while (top > 0 && stack[top - 1].t_enter > r.dist_bounds.y) top--;
+		if (top == 0) break;
+		node = stack[--top].node;
 	}
 	return closest;
 }

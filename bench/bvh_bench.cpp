@@ -1,0 +1,187 @@
+// The BVH benchmark: builds the reference BVH<Triangle> over an OBJ or a scene's meshes and measures
+// build time, memory, SAH cost, node visits and Mrays/s for primary, incoherent closest-hit and
+// occlusion rays, on one thread and on all cores; with Embree, the same for Embree on the same rays,
+// and the ratios. Usage: bvh_bench [OBJ|SCENE] [--repeats N] [--rays N] [--film WxH]. See README.md.
+#include "bench_geometry.h"
+#include "bench_rays.h"
+#include "bench_stats.h"
+#include "bench_timing.h"
+#ifdef LAB_HAVE_EMBREE
+#include "embree_bvh.h"
+#endif
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace {
+
+struct Options {
+	std::string path = "scenes/meshes/stanford_bunny.obj";
+	int repeats = 5;
+	size_t secondary_rays = 500000;
+	int width = 800, height = 600;
+};
+
+Options parse(int argc, char** argv) {
+	Options options;
+	for (int i = 1; i < argc; i++) {
+		std::string arg = argv[i];
+		bool has_value = i + 1 < argc;
+		if (arg == "--repeats" && has_value) options.repeats = std::max(1, std::atoi(argv[++i]));
+		else if (arg == "--rays" && has_value) options.secondary_rays = size_t(std::atoll(argv[++i]));
+		else if (arg == "--film" && has_value) std::sscanf(argv[++i], "%dx%d", &options.width, &options.height);
+		else if (arg == "-h" || arg == "--help") {
+			std::printf("usage: bvh_bench [OBJ|SCENE] [--repeats N] [--rays N] [--film WxH]\n");
+			std::exit(0);
+		} else options.path = arg;
+	}
+	return options;
+}
+
+// Occlusion with the lab's API: a closest-hit query on the bounded segment (any hit would do).
+bool occluded(const BVH<Triangle>& bvh, const Ray& ray) {
+	return bvh.hit(ray).hit;
+}
+
+// Hit distances (INF_F for a miss) or occlusion flags (1 or INF_F) of one method on one ray set.
+using Results = std::vector<float>;
+using Method = std::function<float(const Ray&)>;
+
+struct Measurement {
+	std::vector<double> single, all; // Mrays/s of each repeat, on one thread and on all cores
+	Results results;
+};
+
+// Traces `rays` with every method, `repeats` times, the methods taking turns within each repeat so
+// that a change in the machine's load affects them alike. Checks that one thread and all cores
+// give the same results.
+std::vector<Measurement> measure(const std::vector<Ray>& rays, const std::vector<Method>& methods, unsigned threads,
+                                 int repeats) {
+	std::vector<Measurement> out(methods.size());
+	Results parallel(rays.size());
+	for (int repeat = 0; repeat < repeats; repeat++)
+		for (size_t m = 0; m < methods.size(); m++) {
+			Measurement& me = out[m];
+			me.results.resize(rays.size());
+			double single = timed_serial_for(rays.size(), [&](size_t i) { me.results[i] = methods[m](rays[i]); });
+			double all = timed_parallel_for(rays.size(), threads, [&](size_t i) { parallel[i] = methods[m](rays[i]); });
+			me.single.push_back(rays.size() / single * 1e-6);
+			me.all.push_back(rays.size() / all * 1e-6);
+			if (parallel != me.results)
+				std::printf("ERROR: results on %u threads differ from those on one thread\n", threads);
+		}
+	return out;
+}
+
+#ifdef LAB_HAVE_EMBREE
+// The median over repeats of the ratio a / b within each repeat.
+double median_ratio(const std::vector<double>& a, const std::vector<double>& b) {
+	std::vector<double> ratios;
+	for (size_t i = 0; i < a.size(); i++) ratios.push_back(a[i] / b[i]);
+	return median(ratios);
+}
+
+// How many results differ: hit against miss, or distances differing by more than 1e-4 relative
+// (Embree's triangle test rounds differently, and ours accepts hits 1e-5 outside an edge).
+size_t count_differences(const Results& a, const Results& b) {
+	size_t differ = 0;
+	for (size_t i = 0; i < a.size(); i++) {
+		bool a_hit = a[i] < INF_F, b_hit = b[i] < INF_F;
+		if (a_hit != b_hit || (a_hit && std::abs(a[i] - b[i]) > 1e-4f * std::max(1.0f, std::abs(a[i])))) differ++;
+	}
+	return differ;
+}
+#endif
+
+float hit_distance(const Trace& trace) {
+	return trace.hit ? trace.distance : INF_F;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+	Options options = parse(argc, argv);
+	unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+	Bench_Geometry geometry = load_bench_geometry(options.path);
+	const size_t n = geometry.triangles.size();
+	std::printf("%s: %zu triangles; %d repeats, medians; all cores = %u threads\n", options.path.c_str(), n,
+	            options.repeats, threads);
+
+	// Build (single-threaded, CPU time), as often as the rays are traced.
+	BVH<Triangle> bvh;
+	std::vector<double> builds;
+	for (int repeat = 0; repeat < options.repeats; repeat++) {
+		std::vector<Triangle> copy = geometry.triangles;
+		double start = process_cpu_seconds();
+		bvh.build(std::move(copy), 4); // Tri_Mesh's leaf size
+		builds.push_back(process_cpu_seconds() - start);
+	}
+	double build = median(builds);
+
+	std::vector<Ray> primary = primary_rays(geometry.camera, options.width, options.height);
+	std::vector<float> primary_hits;
+	for (const Ray& ray : primary) primary_hits.push_back(hit_distance(bvh.hit(ray)));
+	Ray_Sets rays = make_ray_sets(geometry, std::move(primary), primary_hits, options.secondary_rays);
+	const std::vector<Ray>* sets[3] = {&rays.primary, &rays.incoherent, &rays.occlusion};
+	const char* names[3] = {"primary", "incoherent", "occlusion"};
+
+	// Methods per ray set: ours first, then Embree's.
+	std::vector<Method> methods[3];
+	for (int s = 0; s < 2; s++) methods[s].push_back([&](const Ray& ray) { return hit_distance(bvh.hit(ray)); });
+	methods[2].push_back([&](const Ray& ray) { return occluded(bvh, ray) ? 1.0f : INF_F; });
+#ifdef LAB_HAVE_EMBREE
+	std::vector<double> embree_builds;
+	std::unique_ptr<Embree_BVH> embree;
+	for (int repeat = 0; repeat < options.repeats; repeat++) {
+		embree.reset();
+		embree = std::make_unique<Embree_BVH>(geometry.triangles);
+		embree_builds.push_back(embree->build_seconds);
+	}
+	double embree_build = median(embree_builds);
+	for (int s = 0; s < 2; s++) methods[s].push_back([&](const Ray& ray) { return embree->closest_hit(ray); });
+	methods[2].push_back([&](const Ray& ray) { return embree->occluded(ray) ? 1.0f : INF_F; });
+#endif
+	std::vector<Measurement> results[3];
+	for (int s = 0; s < 3; s++) results[s] = measure(*sets[s], methods[s], threads, options.repeats);
+
+	std::printf("\nreference BVH: build %.0f ms, %.1f bytes/triangle, SAH cost %.2f, %zu nodes\n", build * 1e3,
+	            double(bvh_bytes(bvh)) / n, sah_cost(bvh), bvh.nodes.size());
+	std::printf("per ray, nodes overlapped up to the closest hit (ideal front-to-back) / triangles in their leaves:\n");
+	for (int s = 0; s < 3; s++) {
+		std::vector<float> hits = results[s][0].results; // occlusion: count the whole segment
+		if (s == 2) std::fill(hits.begin(), hits.end(), INF_F);
+		Visit_Counts visits = visit_counts(bvh, *sets[s], hits);
+		std::printf("  %-10s %6.1f / %5.1f  (%zu rays)\n", names[s], visits.nodes, visits.triangles, sets[s]->size());
+	}
+
+	int status = 0;
+#ifdef LAB_HAVE_EMBREE
+	std::printf("Embree (RTC_BUILD_QUALITY_HIGH, 1 build thread): build %.0f ms, %.1f bytes/triangle\n",
+	            embree_build * 1e3, double(embree->bytes) / n);
+	std::printf("build time ours / Embree: %.2f\n\n", median_ratio(builds, embree_builds));
+	std::printf("%-11s %28s   %28s   %s\n", "Mrays/s", "1 thread: ours  Embree  ratio", "all cores: ours  Embree  ratio",
+	            "results differing");
+	for (int s = 0; s < 3; s++) {
+		const Measurement &a = results[s][0], &b = results[s][1];
+		size_t differ = count_differences(a.results, b.results);
+		std::printf("%-11s %14.2f %7.2f %6.2f   %15.2f %7.2f %6.2f   %zu of %zu\n", names[s], median(a.single),
+		            median(b.single), median_ratio(a.single, b.single), median(a.all), median(b.all),
+		            median_ratio(a.all, b.all), differ, sets[s]->size());
+		if (differ > sets[s]->size() / 1000) {
+			std::printf("ERROR: more than 0.1%% of the %s rays differ between our BVH and Embree\n", names[s]);
+			status = 1;
+		}
+	}
+	std::printf("(ratio: median over the repeats of ours / Embree within a repeat; 1 thread in CPU time)\n");
+#else
+	std::printf("\n(Embree not found at configure time: install libembree-dev, or run ./lab bench, to compare)\n\n");
+	std::printf("%-11s %10s %10s\n", "Mrays/s", "1 thread", "all cores");
+	for (int s = 0; s < 3; s++)
+		std::printf("%-11s %10.2f %10.2f\n", names[s], median(results[s][0].single), median(results[s][0].all));
+#endif
+	return status;
+}
