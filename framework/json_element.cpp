@@ -189,7 +189,8 @@ Json_Element Json_Element::operator[](const std::string& key) const {
 
 void Json_Element::allow_only(std::initializer_list<const char*> keys) const {
 	require_object();
-	for (const auto& [key, member] : value->items()) {
+	for (const auto& item : value->items()) {
+		const std::string& key = item.key(); // (a structured binding cannot be captured before C++20)
 		bool known = std::any_of(keys.begin(), keys.end(), [&](const char* k) { return key == k; });
 		if (!known) (*this)[key].error("unknown key; expected one of: " + join(keys));
 	}

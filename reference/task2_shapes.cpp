@@ -16,6 +16,14 @@ Trace miss(const Ray& ray) {
 	return ret;
 }
 
+// True if e1 x e2 = 0 exactly (a zero-area triangle). Each component of the cross product is a
+// difference of two products, a b - c d; it is 0 exactly when the products are equal, and equal
+// exact products round to equal floats. Testing the products rather than the computed n matters
+// with fused multiply-add (-ffp-contract=fast): fma(a, b, -c d) is the rounding error of c d, not 0.
+bool parallel(Vec3 e1, Vec3 e2) {
+	return e1.y * e2.z == e1.z * e2.y && e1.z * e2.x == e1.x * e2.z && e1.x * e2.y == e1.y * e2.x;
+}
+
 Trace hit_at(const Ray& ray, float t, Vec3 normal) {
 	Trace ret;
 	ret.origin = ray.point;
@@ -38,11 +46,12 @@ Trace Triangle::hit(const Ray& ray) const {
 	//   det = (e1 x d) . e2 = -d . n,  u det = d . (e2 x s),  v det = d . (s x e1),  t det = s . n.
 	Vec3 e1 = v1.position - v0.position;
 	Vec3 e2 = v2.position - v0.position;
+	if (parallel(e1, e2)) return miss(ray); // zero area: nothing to hit
 	Vec3 s = ray.point - v0.position;
 	Vec3 n = glm::cross(e1, e2);
 	float det = -glm::dot(ray.dir, n);
-	// det == 0: the ray is parallel to the plane, or the triangle has zero area (n is exactly 0,
-	// so det is too). No |det| < eps here: small triangles have small determinants.
+	// det == 0: the ray is parallel to the plane (or has no direction). No |det| < eps here: small
+	// triangles have small determinants.
 	if (det == 0.0f) return miss(ray);
 	float inv_det = 1.0f / det;
 	float u = glm::dot(ray.dir, glm::cross(e2, s)) * inv_det;

@@ -40,13 +40,24 @@ float BSDF_Lambertian::pdf(Vec3 out_dir, Vec3 in_dir) const {
 // ---- The estimator (handout §4.2, §4.3) ----------------------------------------------------------
 
 namespace {
-// Where a new ray may start hitting: a distance that grows with the magnitude of the hit point,
-// because the rounding error of a float coordinate does (Mitsuba 3's RayEpsilon scheme:
-// (1 + max |p_i|) * 1500 * 2^-24, about 9e-5 near the origin and 0.9 at 10^4).
+// How far a new ray must stay from the surface it leaves: a distance that grows with the magnitude
+// of the hit point, because the rounding error of a float coordinate does (Mitsuba 3's RayEpsilon
+// scheme: (1 + max |p_i|) * 1500 * 2^-24, about 9e-5 near the origin and 0.9 at 10^4).
 float ray_offset(Vec3 p) {
 	constexpr float RAY_EPSILON = 1500.0f * 0x1p-24f;
 	float magnitude = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
 	return (1.0f + magnitude) * RAY_EPSILON;
+}
+
+// The new ray from a hit (handout §4.2): it starts ray_offset above the surface, along the normal
+// on the side `dir` leaves to, and may hit anything from there on. Pushing the origin off along
+// the normal, rather than only raising t_min, also protects grazing directions: a ray at angle a
+// to the surface is ray_offset / sin(a) along before it is ray_offset above, which for light
+// samples towards the far end of a wall is more than any t_min (the stress suite counts these).
+Ray spawn_ray(const Trace& hit, Vec3 dir, uint32_t depth) {
+	Vec3 side = glm::dot(dir, hit.normal) >= 0.0f ? hit.normal : -hit.normal;
+	Vec3 origin = hit.position + ray_offset(hit.position) * side;
+	return Ray(origin, dir, Vec2{0.0f, INF_F}, depth);
 }
 
 // Russian roulette starts once a path has bounced this often: the first bounces carry most of the
@@ -94,6 +105,5 @@ Spectrum Pathtracer::shade(RNG& rng, const Ray& ray, const Trace& hit) const {
 		}
 	}
 
-	Ray next(hit.position, s.direction, Vec2{ray_offset(hit.position), INF_F}, ray.depth + 1);
-	return radiance + weight * trace(rng, next);
+	return radiance + weight * trace(rng, spawn_ray(hit, s.direction, ray.depth + 1));
 }

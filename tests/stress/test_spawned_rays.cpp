@@ -1,0 +1,106 @@
+// Stress (handout §4.3): rays spawned at a hit point (reflection, refraction, and light-sampled
+// "shadow" directions) never hit the surface they leave, however far the scene is from the origin.
+//
+// The scene: a floor (the material under test) closing the bottom of a tilted box of size 10 whose five
+// other faces emit towards the inside. A camera ray hits the floor; with max_depth = 1 the path
+// tracer spawns exactly one ray from there. Every direction it may draw leaves the floor upwards
+// into an emitter (or, for glass, downwards into a constant environment), so the sample's radiance
+// is > 0 unless the spawned ray hit the floor again at distance ~0. Zero-radiance samples count
+// self-intersections. A fixed offset t > 1e-4 gives 1.5 % of them at offset 10^2 and 42 % at 10^4
+// (testing-anchors §3.3); an offset that grows with the coordinates gives none.
+#include "furnace_scenes.h"
+#include "pathtracer.h"
+#include "rng.h"
+#include "shape_oracle.h"
+#include "stress_count.h"
+#include "stress_meshes.h"
+
+#include <catch2/catch.hpp>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace {
+
+constexpr float BOX = 10.0f;
+const Vec3 OFFSET_DIRECTION = glm::normalize(Vec3{0.6f, -0.48f, 0.64f});
+
+// Box coordinates to world: tilted (an axis-aligned floor would make rounding errors lie in its
+// plane and hide them), then moved to `corner`.
+struct Placement {
+	Vec3 corner;
+	Mat3 rotation = Mat3(glm::rotate(Mat4(1.0f), 0.7f, glm::normalize(Vec3{1.0f, 2.0f, 0.5f})));
+
+	Vec3 operator()(Vec3 p) const {
+		return corner + rotation * p;
+	}
+};
+
+// The box [0, BOX]^3 placed by `place`, normals turned inwards; triangles 0 and 1 are the floor z = 0.
+Scene floor_in_emitting_box(const Material& floor, const Placement& place, bool environment) {
+	std::vector<Triangle> box = cube(BOX, Vec3{0.0f});
+	for (Triangle& tri : box) {
+		tri = flat_triangle(place(tri.v0.position), place(tri.v1.position), place(tri.v2.position));
+		Vec3 n = -tri.v0.normal;
+		tri.v0.normal = tri.v1.normal = tri.v2.normal = n;
+	}
+	std::vector<Triangle> floor_tris(box.begin(), box.begin() + 2), walls(box.begin() + 2, box.end());
+	Scene scene;
+	scene.materials = {diffuse_material(Spectrum{0.0f}, Spectrum{1.0f}), floor};
+	scene.material_names = {"emitting walls", "floor"};
+	scene.objects.emplace_back(Tri_Mesh(std::move(walls), 4), Mat4(1.0f), 0u, 0u);
+	scene.objects.emplace_back(Tri_Mesh(std::move(floor_tris), 4), Mat4(1.0f), 1u, 1u);
+	if (environment) scene.environment = Env_Constant{Spectrum{1.0f}};
+	scene.commit();
+	return scene;
+}
+
+// Camera-like rays from above the middle of the box to points of the floor at least 2 from the
+// walls (so that a spawned ray's first hit is at least 2 away, beyond any sane offset).
+Stress_Count count_self_intersections(const Material& floor, bool environment, int rays_per_offset, uint64_t seed) {
+	Stress_Count count;
+	RNG rng(seed);
+	for (float offset : {1.0f, 1e2f, 1e3f, 1e4f}) {
+		Placement place{offset * OFFSET_DIRECTION};
+		Scene scene = floor_in_emitting_box(floor, place, environment);
+		Render_Settings settings;
+		settings.max_depth = 1;
+		Pathtracer pathtracer(scene, settings);
+		Vec3 eye = place(Vec3{0.5f * BOX, 0.5f * BOX, 0.8f * BOX});
+		for (int i = 0; i < rays_per_offset; i++) {
+			Vec3 target = place(Vec3{2.0f + 6.0f * rng.unit(), 2.0f + 6.0f * rng.unit(), 0.0f});
+			Ray ray(eye, glm::normalize(target - eye));
+			Spectrum radiance = pathtracer.trace(rng, ray);
+			count.add(!(luminance(radiance) > 0.0f), [&] {
+				return "offset " + std::to_string(offset) + ", camera ray " + shape_oracle::show(ray);
+			});
+		}
+	}
+	return count;
+}
+
+void require_none(const Stress_Count& count, const char* what) {
+	INFO("Pathtracer::shade: " << count.report(std::string("rays spawned by ") + what +
+	                                          " from a floor at offsets 1 ... 10^4 hit the floor again")
+	                           << ".\nThe new ray must start beyond the rounding error of the hit point, which "
+	                              "grows with its coordinates: use dist_bounds.x = (1 + max |p_i|) * 1500 * 2^-24, "
+	                              "not a fixed 1e-4 (handout §4.3).");
+	CHECK(count.failures == 0);
+	std::printf("stress count: self-intersections of %s: %zu of %zu\n", what, count.failures, count.inputs);
+}
+
+} // namespace
+
+TEST_CASE("Stress: diffuse bounces and light-sampled (shadow) rays never hit the surface they leave, offsets 1 ... 10^4",
+          "[stress][task4]") {
+	require_none(count_self_intersections(diffuse_material(Spectrum{0.5f}, Spectrum{0.0f}), false, 10000, 11),
+	             "a Lambertian floor (BSDF and light samples)");
+}
+
+TEST_CASE("Stress: reflected rays never hit the mirror they leave, offsets 1 ... 10^4", "[stress][task4]") {
+	require_none(count_self_intersections(mirror_material(Spectrum{1.0f}), false, 10000, 12), "a mirror floor");
+}
+
+TEST_CASE("Stress: reflected and refracted rays never hit the glass they leave, offsets 1 ... 10^4", "[stress][task4]") {
+	require_none(count_self_intersections(glass_material(Spectrum{1.0f}, Spectrum{1.0f}, 1.5f), true, 10000, 13),
+	             "a glass floor (reflection and refraction)");
+}
