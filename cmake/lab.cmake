@@ -21,6 +21,30 @@ set(LAB_TASK_FILES
 	task6_direct_lighting.cpp
 	task7_env_light.cpp)
 
+# The instructors' repository has the reference sources; a student release (./lab export) has
+# prebuilt/libtask<N>_reference.a instead.
+if(EXISTS ${PROJECT_SOURCE_DIR}/reference)
+	set(LAB_REFERENCE_SOURCES ON)
+elseif(EXISTS ${PROJECT_SOURCE_DIR}/prebuilt)
+	set(LAB_REFERENCE_SOURCES OFF)
+else()
+	message(FATAL_ERROR "neither reference/ nor prebuilt/ is present: the other tasks cannot be linked")
+endif()
+
+# lab_prebuilt_reference(<n>): task<n>_reference from the shipped archive, linked whole (like the
+# object library it replaces), since the framework calls into it and it calls into the framework.
+function(lab_prebuilt_reference n)
+	set(archive ${PROJECT_SOURCE_DIR}/prebuilt/libtask${n}_reference.a)
+	if(NOT EXISTS ${archive})
+		message(FATAL_ERROR "missing ${archive}: re-export the student release (./lab export)")
+	endif()
+	add_library(task${n}_reference_archive STATIC IMPORTED)
+	set_target_properties(task${n}_reference_archive PROPERTIES IMPORTED_LOCATION ${archive})
+	add_library(task${n}_reference INTERFACE)
+	target_link_libraries(task${n}_reference INTERFACE
+		framework_headers "$<LINK_LIBRARY:WHOLE_ARCHIVE,task${n}_reference_archive>")
+endfunction()
+
 # lab_link_tasks(<target> <impl of task 1> ... <impl of task 7>): link the chosen implementations.
 function(lab_link_tasks target)
 	set(n 1)

@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# The student release (./lab export) in a temporary folder: it must hold no reference source, and
+# its task-1 grader must build from the prebuilt reference and fail on the shipped stub.
+#
+# usage: test_export.sh REPOSITORY_ROOT
+set -euo pipefail
+
+root=$1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "export test: $*" >&2; exit 1; }
+
+LAB_EXPORT_BUILD_DIR=$tmp/objects "$root/lab" export "$tmp/release" >/dev/null 2>"$tmp/export.log" ||
+	{ cat "$tmp/export.log" >&2; fail "./lab export failed"; }
+release=$tmp/release
+
+# No reference source: no reference/ folder, and no line of reference code that the stubs lack.
+[ ! -e "$release/reference" ] || fail "the release has a reference/ folder"
+for n in 1 2 3 4 5 6 7; do
+	[ -f "$release/prebuilt/libtask${n}_reference.a" ] || fail "prebuilt/libtask${n}_reference.a is missing"
+done
+# Code lines (not comments) of reference/ long enough to be distinctive, absent from the stubs and
+# not quoted on purpose by a handout. A single line can recur by coincidence (a test oracle does
+# the same thing); three in one file mean copied code.
+patterns=$tmp/reference_lines
+for file in "$root"/reference/*.cpp; do
+	stub=$root/student/$(basename "$file")
+	while IFS= read -r line; do
+		trimmed=$(echo "$line" | sed 's/^[[:space:]]*//')
+		[ ${#trimmed} -ge 40 ] || continue
+		[[ $trimmed == //* || $trimmed == \** || $trimmed == /\** ]] && continue
+		grep -qF -- "$trimmed" "$stub" && continue
+		grep -rqF -- "$trimmed" "$root/handouts" && continue
+		echo "$trimmed"
+	done <"$file"
+done | sort -u >"$patterns"
+checked=$(wc -l <"$patterns")
+[ "$checked" -ge 50 ] || fail "only $checked distinctive reference lines to look for: the check is too weak"
+while IFS=: read -r file count; do
+	[ "$count" -lt 3 ] || fail "$file has $count lines of reference code: $(grep -F -f "$patterns" "$file" | head -3)"
+done < <(grep -rIcF -f "$patterns" "$release" | grep -v ':0$' || true)
+echo "export test: no file of the release has 3 of the $checked distinctive reference lines"
+
+# The student's view: configure, build the task-1 grader, run ctest -L task1.
+cmake -S "$release" -B "$release/build" -G Ninja -DCMAKE_BUILD_TYPE=Release >"$tmp/configure.log" 2>&1 ||
+	{ cat "$tmp/configure.log" >&2; fail "the release does not configure"; }
+cmake --build "$release/build" --parallel 2 --target grader_task1_student >"$tmp/build.log" 2>&1 ||
+	{ tail -40 "$tmp/build.log" >&2; fail "grader_task1_student does not build in the release"; }
+status=0
+(cd "$release/build" && ctest --no-tests=error --output-on-failure -L task1) >"$tmp/ctest.log" 2>&1 || status=$?
+cat "$tmp/ctest.log" | tail -15
+[ "$status" -ne 0 ] || fail "ctest -L task1 passed on the shipped stub"
+grep -q "tests failed out of 1$" "$tmp/ctest.log" || fail "ctest -L task1 did not run exactly one test"
+grep -q "grader_task1_student" "$tmp/ctest.log" || fail "the output does not name grader_task1_student"
+grep -Eq "test cases: *[0-9]+ \| *([0-9]+ passed \| *)?[1-9][0-9]* failed" "$tmp/ctest.log" ||
+	fail "the grader did not run to its summary with failed test cases (a crash?)"
+echo "export test: the release builds, and its task-1 grader fails on the stub as it should"

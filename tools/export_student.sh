@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# The student release: writes DIR with everything students need and no reference source. The
+# reference tasks ship compiled, one static archive per task in prebuilt/, so that each grader still
+# links the student's task N with the reference of the other six (cmake/lab.cmake).
+#
+# usage: tools/export_student.sh DIR   (./lab export DIR)
+# LAB_EXPORT_BUILD_DIR: where the archives are built (default build-release-objects/).
+set -euo pipefail
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+[ $# -eq 1 ] || { echo "usage: ./lab export DIR" >&2; exit 2; }
+dest=$1
+objects=${LAB_EXPORT_BUILD_DIR:-$root/build-release-objects}
+jobs=$(nproc 2>/dev/null || echo 2)
+if [ -e "$dest" ] && [ -n "$(ls -A "$dest")" ]; then
+	echo "lab export: $dest exists and is not empty" >&2
+	exit 2
+fi
+
+# The reference tasks as students will compile their own: Release, the lab's flags, and no LTO
+# (LTO objects only link with the very compiler version that wrote them).
+cmake -S "$root" -B "$objects" -G Ninja -DCMAKE_BUILD_TYPE=Release -DLAB_LTO=OFF >&2
+archives=()
+for n in 1 2 3 4 5 6 7; do archives+=("task${n}_reference_archive"); done
+cmake --build "$objects" --parallel "$jobs" --target "${archives[@]}" >&2
+
+# The tree: everything but reference/, the instructors' tests (stress, images, crosscheck, fuzz,
+# export) and the benchmarks.
+mkdir -p "$dest/tests" "$dest/prebuilt"
+(cd "$root" && cp -R CMakeLists.txt lab cmake framework tasks student scenes handouts "$dest/")
+(cd "$root/tests" && cp -R CMakeLists.txt support framework task1 task2 task3 task4 task5 task6 task7 "$dest/tests/")
+cp "$objects"/prebuilt/libtask[1-7]_reference.a "$dest/prebuilt/"
+
+# The students' README: the "For students" section of the instructors' README.
+{
+	cat <<README
+# PathTracer Lab
+
+Build an end-to-end Monte Carlo path tracer in seven graded tasks. You edit exactly the seven files
+in \`student/\`; \`prebuilt/\` holds the reference solution of every task, compiled, so that each
+task is graded with the reference for the other six.
+
+\`\`\`sh
+./lab render-student    # installs missing Debian packages, builds, renders the Cornell box with your code
+./lab grade 1           # builds and runs the grader of task 1 against your code
+\`\`\`
+
+README
+	sed -n '/^## For students$/,/^## For instructors$/p' "$root/README.md" | sed '1d;$d'
+} >"$dest/README.md"
+echo "$dest"
