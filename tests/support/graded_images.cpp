@@ -4,6 +4,8 @@
 #include "image_io.h"
 #include "scene_loader.h"
 
+#include <catch2/catch.hpp>
+
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -79,4 +81,12 @@ Reference_Check check_against_reference(const Graded_Scene& scene, std::optional
 	Film film = render_graded(scene, loaded, loaded.settings.samples, render_seed, options);
 	return Reference_Check{compare_images(Image_Estimate::from(film), read_reference(scene, loaded.settings)),
 	                       film.non_finite()};
+}
+
+void check_renders_like_reference(const std::string& name, const std::string& hint) {
+	Reference_Check check = check_against_reference(graded_scene(name));
+	INFO("scenes/graded/" << name << ".json: " << check.comparison.message);
+	INFO(hint);
+	CHECK(check.non_finite == 0);
+	CHECK(check.comparison.pass);
 }

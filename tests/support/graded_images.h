@@ -47,3 +47,8 @@ struct Reference_Check {
 };
 Reference_Check check_against_reference(const Graded_Scene& graded,
                                         std::optional<uint64_t> seed = std::nullopt);
+
+// The grader's reference-image check as Catch2 checks: renders the graded scene `name` with the task
+// under test, compares it with the stored reference, and on failure shows where the image differs
+// and `hint` (what to look at, in the handout's terms).
+void check_renders_like_reference(const std::string& name, const std::string& hint);

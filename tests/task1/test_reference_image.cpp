@@ -8,12 +8,8 @@
 
 TEST_CASE("the graded scene eye_bunny renders like its reference image",
           "[task1][image][statistical]") {
-	const Graded_Scene& scene = graded_scene("eye_bunny");
-	Reference_Check check = check_against_reference(scene);
-	INFO("scenes/graded/eye_bunny.json: " << check.comparison.message);
-	INFO("If the picture is shifted, flipped or stretched, look at generate_ray (handout §1.2); if"
-	     " edges are too sharp or too soft, at the random point in the pixel of trace_pixel "
-	     "(handout §1.3). Render it: ./lab render-student scenes/graded/eye_bunny.json --view eye");
-	CHECK(check.non_finite == 0);
-	CHECK(check.comparison.pass);
+	check_renders_like_reference("eye_bunny",
+	                             "If the picture is shifted, flipped or stretched, look at generate_ray (handout §1.2); if"
+	                             " edges are too sharp or too soft, at the random point in the pixel of trace_pixel "
+	                             "(handout §1.3). Render it: ./lab render-student scenes/graded/eye_bunny.json --view eye");
 }

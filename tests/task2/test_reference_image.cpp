@@ -8,13 +8,9 @@
 
 TEST_CASE("the graded scene eye_bunny renders like its reference image",
           "[task2][image][statistical]") {
-	const Graded_Scene& scene = graded_scene("eye_bunny");
-	Reference_Check check = check_against_reference(scene);
-	INFO("scenes/graded/eye_bunny.json: " << check.comparison.message);
-	INFO("Wrong shading on the sphere or the bunny: check that hit normals point outwards"
-	     ", that the barycentric interpolation of vertex normals uses (1 - u - v, u,"
-	     " v) (handout §2.2, §2.3); missing objects: check the distance bounds. Render it: ./lab "
-	     "render-student scenes/graded/eye_bunny.json --view eye");
-	CHECK(check.non_finite == 0);
-	CHECK(check.comparison.pass);
+	check_renders_like_reference("eye_bunny",
+	                             "Wrong shading on the sphere or the bunny: check that hit normals point outwards"
+	                             ", that the barycentric interpolation of vertex normals uses (1 - u - v, u,"
+	                             " v) (handout §2.2, §2.3); missing objects: check the distance bounds. Render it: ./lab "
+	                             "render-student scenes/graded/eye_bunny.json --view eye");
 }

@@ -10,14 +10,10 @@
 
 TEST_CASE("the graded scene eye_bunny renders through the BVH like its reference image",
           "[task3][image][statistical]") {
-	const Graded_Scene& scene = graded_scene("eye_bunny");
-	Reference_Check check = check_against_reference(scene);
-	INFO("scenes/graded/eye_bunny.json: " << check.comparison.message);
-	INFO("Missing or wrong surfaces: the traversal skipped a node it must visit, or kept a farther hit "
-	     "(handout §3.3); the box test must accept rays that start inside and flat boxes (handout §3.1). "
-	     "Render it: ./lab render-student scenes/graded/eye_bunny.json --view eye");
-	CHECK(check.non_finite == 0);
-	CHECK(check.comparison.pass);
+	check_renders_like_reference("eye_bunny",
+	                             "Missing or wrong surfaces: the traversal skipped a node it must visit, or kept a farther hit "
+	                             "(handout §3.3); the box test must accept rays that start inside and flat boxes (handout §3.1). "
+	                             "Render it: ./lab render-student scenes/graded/eye_bunny.json --view eye");
 }
 
 TEST_CASE("the bunny of the graded scene gets a BVH of more than one node", "[task3][image]") {

@@ -8,12 +8,8 @@
 
 TEST_CASE("the graded scene cornell_diffuse renders like its reference image",
           "[task4][image][statistical]") {
-	const Graded_Scene& scene = graded_scene("cornell_diffuse");
-	Reference_Check check = check_against_reference(scene);
-	INFO("scenes/graded/cornell_diffuse.json: " << check.comparison.message);
-	INFO("Too dark or too bright: check the estimator f * |cos| / pdf (handout §4.2) and that the "
-	     "Lambertian BSDF, its sampling and its pdf agree (handout §4.1). Render it: ./lab render-"
-	     "student scenes/graded/cornell_diffuse.json");
-	CHECK(check.non_finite == 0);
-	CHECK(check.comparison.pass);
+	check_renders_like_reference("cornell_diffuse",
+	                             "Too dark or too bright: check the estimator f * |cos| / pdf (handout §4.2) and that the "
+	                             "Lambertian BSDF, its sampling and its pdf agree (handout §4.1). Render it: ./lab render-"
+	                             "student scenes/graded/cornell_diffuse.json");
 }

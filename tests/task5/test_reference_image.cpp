@@ -9,12 +9,8 @@
 
 TEST_CASE("the graded scene glass_balls renders like its reference image",
           "[task5][image][statistical]") {
-	const Graded_Scene& scene = graded_scene("glass_balls");
-	Reference_Check check = check_against_reference(scene);
-	INFO("scenes/graded/glass_balls.json: " << check.comparison.message);
-	INFO("The glass ball must both reflect (with probability F) and refract (handout §5.2, §5.3), "
-	     "the mirror reflect about the normal (handout §5.1). Render it: ./lab render-student "
-	     "scenes/graded/glass_balls.json");
-	CHECK(check.non_finite == 0);
-	CHECK(check.comparison.pass);
+	check_renders_like_reference("glass_balls",
+	                             "The glass ball must both reflect (with probability F) and refract (handout §5.2, §5.3), "
+	                             "the mirror reflect about the normal (handout §5.1). Render it: ./lab render-student "
+	                             "scenes/graded/glass_balls.json");
 }

@@ -8,12 +8,8 @@
 
 TEST_CASE("the graded scene cornell_small_light renders like its reference image",
           "[task6][image][statistical]") {
-	const Graded_Scene& scene = graded_scene("cornell_small_light");
-	Reference_Check check = check_against_reference(scene);
-	INFO("scenes/graded/cornell_small_light.json: " << check.comparison.message);
-	INFO("The mixture's pdf must be 1/2 p_bsdf + 1/2 p_lights for EVERY direction, whichever "
-	     "strategy drew it (handout §6.2). Render it: ./lab render-student "
-	     "scenes/graded/cornell_small_light.json");
-	CHECK(check.non_finite == 0);
-	CHECK(check.comparison.pass);
+	check_renders_like_reference("cornell_small_light",
+	                             "The mixture's pdf must be 1/2 p_bsdf + 1/2 p_lights for EVERY direction, whichever "
+	                             "strategy drew it (handout §6.2). Render it: ./lab render-student "
+	                             "scenes/graded/cornell_small_light.json");
 }

@@ -8,12 +8,8 @@
 
 TEST_CASE("the graded scene env_overcast renders like its reference image",
           "[task7][image][statistical]") {
-	const Graded_Scene& scene = graded_scene("env_overcast");
-	Reference_Check check = check_against_reference(scene);
-	INFO("scenes/graded/env_overcast.json: " << check.comparison.message);
-	INFO("Check that Env_Map::pdf converts the density over the image to solid angle with the "
-	     "Jacobian 2 pi^2 sin(theta) (handout §7.4) and agrees with sample. Render it: ./lab "
-	     "render-student scenes/graded/env_overcast.json");
-	CHECK(check.non_finite == 0);
-	CHECK(check.comparison.pass);
+	check_renders_like_reference("env_overcast",
+	                             "Check that Env_Map::pdf converts the density over the image to solid angle with the "
+	                             "Jacobian 2 pi^2 sin(theta) (handout §7.4) and agrees with sample. Render it: ./lab "
+	                             "render-student scenes/graded/env_overcast.json");
 }
