@@ -156,6 +156,14 @@ stats::Cap_Chi2_Result chi2_of_light_sampling(const Light_View& view, size_t sam
 		[&](Vec3 dir) { return double(pt.area_lights_pdf(view.from, dir)); }, samples, seed);
 }
 
+// The sampled directions follow area_lights_pdf (χ², 10^6 samples), and it integrates to 1.
+void check_sampling_follows_density(const Light_View& view, uint64_t seed) {
+	stats::Cap_Chi2_Result r = chi2_of_light_sampling(view, 1000000, seed);
+	INFO(view.name << ": " << r.summary() << "; significance " << CHI2_ALPHA);
+	CHECK(std::abs(r.pdf_integral - 1.0) <= r.integral_error_bound + SMOOTH_QUADRATURE_ERROR);
+	CHECK(r.pass(CHI2_ALPHA));
+}
+
 // Ring edges over the whole sphere, with one edge on the silhouette of a sphere light of radius r
 // at distance d along the axis (so no cell straddles it).
 std::vector<double> whole_sphere_edges(double radius, double distance) {
@@ -242,10 +250,7 @@ TEST_CASE("with an environment and an emissive sphere, each is chosen half the t
 		}
 	}
 	SECTION("samples follow that density (chi-square over the whole sphere)") {
-		stats::Cap_Chi2_Result r = chi2_of_light_sampling(view, 1000000, 21);
-		INFO(view.name << ": " << r.summary() << "; significance " << CHI2_ALPHA);
-		CHECK(std::abs(r.pdf_integral - 1.0) <= r.integral_error_bound + SMOOTH_QUADRATURE_ERROR);
-		CHECK(r.pass(CHI2_ALPHA));
+		check_sampling_follows_density(view, 21);
 	}
 }
 
@@ -276,16 +281,13 @@ TEST_CASE("with two emissive objects, each is chosen half the time", "[area_ligh
 		}
 	}
 	SECTION("samples follow that density (chi-square over the whole sphere)") {
-		stats::Cap_Chi2_Result r = chi2_of_light_sampling(view, 1000000, 22);
-		INFO(view.name << ": " << r.summary() << "; significance " << CHI2_ALPHA);
-		CHECK(std::abs(r.pdf_integral - 1.0) <= r.integral_error_bound + SMOOTH_QUADRATURE_ERROR);
-		CHECK(r.pass(CHI2_ALPHA));
+		check_sampling_follows_density(view, 22);
 	}
 }
 
 TEST_CASE("only emissive objects and the environment are lights", "[area_lights]") {
 	Scene scene;
-	add_object(scene, Sphere{1.0f}, add_material(scene, lambertian(Spectrum{0.8f}), "grey"));
+	add_object(scene, Sphere{1.0f}, add_material(scene, diffuse_material(Spectrum{0.8f}), "grey"));
 	scene.commit();
 	Pathtracer pt(scene, Render_Settings{});
 	CHECK(scene.area_lights.count() == 0);

@@ -63,25 +63,6 @@ const char* to_string(Pixel_Coverage::Kind kind) {
 	}
 }
 
-Material diffuse_material(Spectrum albedo, Spectrum emission) {
-	Material m;
-	m.bsdf = BSDF(BSDF_Lambertian{albedo});
-	m.emission = emission;
-	return m;
-}
-
-Material mirror_material(Spectrum reflectance) {
-	Material m;
-	m.bsdf = BSDF(BSDF_Mirror{reflectance});
-	return m;
-}
-
-Material glass_material(Spectrum reflectance, Spectrum transmittance, float index_of_refraction) {
-	Material m;
-	m.bsdf = BSDF(BSDF_Glass{reflectance, transmittance, index_of_refraction});
-	return m;
-}
-
 Film render_square(const Scene& scene, uint32_t size, uint32_t spp, uint32_t max_depth, uint64_t seed) {
 	Render_Settings settings;
 	settings.width = settings.height = size;

@@ -10,6 +10,7 @@
 // - from INSIDE: the camera sits inside the sphere, so every camera ray hits it.
 #include "film.h"
 #include "scene.h"
+#include "test_materials.h"
 
 #include <string>
 
@@ -51,10 +52,6 @@ private:
 
 const char* to_string(Pixel_Coverage::Kind kind);
 
-// Materials.
-Material diffuse_material(Spectrum albedo, Spectrum emission = Spectrum{0.0f});
-Material mirror_material(Spectrum reflectance);
-Material glass_material(Spectrum reflectance, Spectrum transmittance, float index_of_refraction);
 
 // Renders `scene` on a square film of size x size pixels with the reference pipeline (render()).
 Film render_square(const Scene& scene, uint32_t size, uint32_t spp, uint32_t max_depth, uint64_t seed);

@@ -48,19 +48,6 @@ void add_object(Scene& scene, std::variant<Sphere, Tri_Mesh> shape, uint32_t mat
 	scene.objects.emplace_back(std::move(shape), to_world, material, index);
 }
 
-Material emitter(Spectrum radiance) {
-	Material m;
-	m.bsdf = BSDF(BSDF_Lambertian{Spectrum{0.0f}});
-	m.emission = radiance;
-	return m;
-}
-
-Material lambertian(Spectrum albedo) {
-	Material m;
-	m.bsdf = BSDF(BSDF_Lambertian{albedo});
-	return m;
-}
-
 Scene ceiling_light_scene(float half_side, float height, Spectrum radiance) {
 	Scene scene;
 	add_object(scene, ceiling_square(half_side, height), add_material(scene, emitter(radiance), "light"));

@@ -2,6 +2,7 @@
 // Light sources and small lit scenes built in code with the framework API, for the light-sampling
 // tests (tests/framework/test_area_lights.cpp) and the task 6 grader.
 #include "scene.h"
+#include "test_materials.h"
 
 #include <string>
 #include <variant>
@@ -26,10 +27,6 @@ uint32_t add_material(Scene& scene, const Material& material, const std::string&
 // Appends an object (before Scene::commit).
 void add_object(Scene& scene, std::variant<Sphere, Tri_Mesh> shape, uint32_t material, Mat4 to_world = Mat4{1.0f});
 
-// A material that only emits: black Lambertian with the given emission.
-Material emitter(Spectrum radiance);
-// A Lambertian material that does not emit.
-Material lambertian(Spectrum albedo);
 
 // A scene holding only ceiling_square(half_side, height) with emission `radiance`, committed.
 Scene ceiling_light_scene(float half_side, float height, Spectrum radiance = Spectrum{1.0f});

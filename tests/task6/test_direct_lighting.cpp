@@ -51,7 +51,7 @@ Sample_Moments render_samples(const Pathtracer& pt, size_t n) {
 Scene lit_floor(float half_side, float height, Spectrum radiance, Vec3 eye) {
 	Scene scene;
 	add_object(scene, parallelogram(Vec3{-3.0f, 0.0f, -3.0f}, Vec3{0.0f, 0.0f, 6.0f}, Vec3{6.0f, 0.0f, 0.0f}),
-	           add_material(scene, lambertian(Spectrum{RHO}), "floor"));
+	           add_material(scene, diffuse_material(Spectrum{RHO}), "floor"));
 	add_object(scene, ceiling_square(half_side, height), add_material(scene, emitter(radiance), "light"));
 	scene.camera = Camera::look_at(eye, Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f}, 0.05f, 1.0f);
 	return scene;
@@ -148,7 +148,7 @@ TEST_CASE("a light hidden behind a blocker gives exactly 0", "[task6]") {
 	// centre; the camera looks at that centre from the side, under the blocker. No direction can
 	// bring light, so every sample is exactly 0, never NaN.
 	Scene scene = lit_floor(0.5f, 1.0f, Spectrum{1.0f}, Vec3{2.0f, 0.1f, 0.0f});
-	add_object(scene, ceiling_square(0.6f, 0.5f), add_material(scene, lambertian(Spectrum{0.0f}), "blocker"));
+	add_object(scene, ceiling_square(0.6f, 0.5f), add_material(scene, diffuse_material(Spectrum{0.0f}), "blocker"));
 	scene.commit();
 	Pathtracer pt(scene, one_pixel(51));
 	for (size_t i = 0; i < 20000; i++) {

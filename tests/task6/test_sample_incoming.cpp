@@ -169,7 +169,7 @@ TEST_CASE("discrete BSDFs are sampled as they are, without light sampling", "[ta
 TEST_CASE("without lights, sample_incoming is plain BSDF sampling", "[task6]") {
 	// A grey sphere and nothing that emits: has_lights() is false, and sample_area_lights would throw.
 	Scene scene;
-	add_object(scene, Sphere{1.0f}, add_material(scene, lambertian(Spectrum{0.5f}), "grey"));
+	add_object(scene, Sphere{1.0f}, add_material(scene, diffuse_material(Spectrum{0.5f}), "grey"));
 	scene.commit();
 	Pathtracer pt(scene, Render_Settings{});
 	REQUIRE_FALSE(pt.has_lights());
