@@ -41,11 +41,11 @@ while IFS=: read -r file count; do
 done < <(grep -rIcF -f "$patterns" "$release" | grep -v ':0$' || true)
 echo "export test: no file of the release has 3 of the $checked distinctive reference lines"
 
-# The student's view: configure, build the task-1 grader, run ctest -L task1.
+# The student's view: configure, build the task-1 grader (and the grade report's tool), run ctest -L task1.
 cmake -S "$release" -B "$release/build" -G Ninja -DCMAKE_BUILD_TYPE=Release >"$tmp/configure.log" 2>&1 ||
 	{ cat "$tmp/configure.log" >&2; fail "the release does not configure"; }
-cmake --build "$release/build" --parallel 2 --target grader_task1_student >"$tmp/build.log" 2>&1 ||
-	{ tail -40 "$tmp/build.log" >&2; fail "grader_task1_student does not build in the release"; }
+cmake --build "$release/build" --parallel 2 --target grader_task1_student grade_report >"$tmp/build.log" 2>&1 ||
+	{ tail -40 "$tmp/build.log" >&2; fail "grader_task1_student or grade_report does not build in the release"; }
 status=0
 (cd "$release/build" && ctest --no-tests=error --output-on-failure -L task1) >"$tmp/ctest.log" 2>&1 || status=$?
 cat "$tmp/ctest.log" | tail -15
@@ -55,3 +55,16 @@ grep -q "grader_task1_student" "$tmp/ctest.log" || fail "the output does not nam
 grep -Eq "test cases: *[0-9]+ \| *([0-9]+ passed \| *)?[1-9][0-9]* failed" "$tmp/ctest.log" ||
 	fail "the grader did not run to its summary with failed test cases (a crash?)"
 echo "export test: the release builds, and its task-1 grader fails on the stub as it should"
+
+# The grade report's pieces work in the release: the task-1 grader records its results and images,
+# and grade_report turns them into a page that shows task 1 failing (./lab report runs all seven).
+status=0
+(cd "$release" && LAB_REPORT_DIR=$tmp/report LAB_REPORT_TASK=1 build/tests/grader_task1_student) >"$tmp/report.log" 2>&1 ||
+	status=$?
+[ "$status" -ne 0 ] || fail "the task-1 grader passed on the stub with LAB_REPORT_DIR set"
+echo "$status" >"$tmp/report/task1.exit"
+"$release/build/tests/report/grade_report" "$tmp/report" >/dev/null 2>&1 || fail "grade_report failed in the release"
+grep -q '<h2><span class="badge FAIL">FAIL</span> Task 1: ' "$tmp/report/index.html" ||
+	fail "the release's grade report does not show task 1 failing"
+[ -s "$tmp/report/task1_eye_bunny_z.png" ] || fail "the release's task-1 grader wrote no heat map for the report"
+echo "export test: the release's grade report shows task 1 failing, with its images"

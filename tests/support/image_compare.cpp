@@ -29,6 +29,20 @@ double pixel_z(double x, double var_x, double n_x, double r, double var_r, doubl
 	return (x - r) / std::sqrt(s2 / n_x + var_r / n_r + floor * floor);
 }
 
+// z of channel `ch` of pixel `i` of the render against the reference.
+double channel_z(const Image_Estimate& render, const Image_Estimate& reference, size_t i, int ch) {
+	return pixel_z(render.mean.pixels[i][ch], render.variance.pixels[i][ch], render.samples[i],
+	               reference.mean.pixels[i][ch], reference.variance.pixels[i][ch], reference.samples[i]);
+}
+
+void require_same_size(const std::string& caller, const HDR_Image& x, const HDR_Image& r) {
+	if (x.w != r.w || x.h != r.h) {
+		throw std::invalid_argument(caller + ": the render is " + std::to_string(x.w) + " x " +
+		                            std::to_string(x.h) + ", the reference " + std::to_string(r.w) + " x " +
+		                            std::to_string(r.h));
+	}
+}
+
 std::string describe(const Image_Comparison& c, uint32_t w, uint32_t h) {
 	std::ostringstream out;
 	out << c.failed << " of " << c.tests << " pixel channels differ from the reference by more than |z| = "
@@ -47,11 +61,7 @@ std::string describe(const Image_Comparison& c, uint32_t w, uint32_t h) {
 Image_Comparison compare_images(const Image_Estimate& render, const Image_Estimate& reference) {
 	const HDR_Image& x = render.mean;
 	const HDR_Image& r = reference.mean;
-	if (x.w != r.w || x.h != r.h) {
-		throw std::invalid_argument("compare_images: the render is " + std::to_string(x.w) + " x " +
-		                            std::to_string(x.h) + ", the reference " + std::to_string(r.w) + " x " +
-		                            std::to_string(r.h));
-	}
+	require_same_size("compare_images", x, r);
 	Image_Comparison c;
 	c.tests = x.pixels.size() * 3;
 	c.z_critical = stats::two_sided_z(stats::sidak(IMAGE_ALPHA, c.tests));
@@ -63,8 +73,7 @@ Image_Comparison compare_images(const Image_Estimate& render, const Image_Estima
 			for (int ch = 0; ch < 3; ch++) {
 				double xm = x.pixels[i][ch], rm = r.pixels[i][ch];
 				squared_error += (xm - rm) * (xm - rm) / (rm * rm + 0.01);
-				double z = pixel_z(xm, render.variance.pixels[i][ch], render.samples[i], rm,
-				                   reference.variance.pixels[i][ch], reference.samples[i]);
+				double z = channel_z(render, reference, i, ch);
 				if (std::abs(z) > std::abs(c.worst_z)) c.worst_z = z, c.worst_x = px, c.worst_y = py;
 				if (!(std::abs(z) <= c.z_critical)) {
 					c.failed++;
@@ -78,4 +87,13 @@ Image_Comparison compare_images(const Image_Estimate& render, const Image_Estima
 	c.pass = double(c.tests - c.failed) >= IMAGE_MIN_PASS_FRACTION * double(c.tests);
 	c.message = describe(c, x.w, x.h);
 	return c;
+}
+
+HDR_Image z_scores(const Image_Estimate& render, const Image_Estimate& reference) {
+	require_same_size("z_scores", render.mean, reference.mean);
+	HDR_Image z(render.mean.w, render.mean.h);
+	for (size_t i = 0; i < z.pixels.size(); i++) {
+		for (int ch = 0; ch < 3; ch++) z.pixels[i][ch] = float(channel_z(render, reference, i, ch));
+	}
+	return z;
 }

@@ -61,3 +61,8 @@ struct Image_Comparison {
 };
 
 Image_Comparison compare_images(const Image_Estimate& render, const Image_Estimate& reference);
+
+// The z of every pixel channel, as compare_images computes it (for pictures of where two images
+// differ, e.g. the grade report's heat map): 0 where the means are equal, ±infinity where a pixel
+// has no finite sample, NaN where the render's mean is NaN. Same sizes required.
+HDR_Image z_scores(const Image_Estimate& render, const Image_Estimate& reference);

@@ -1,0 +1,61 @@
+#pragma once
+// One task's result, read from the files `./lab report` leaves in the report directory:
+//
+//   task<N>.build.log   the output of building grader_task<N>_student
+//   task<N>.exit        the grader's exit status (absent: the grader did not build, or was not run)
+//   task<N>.log         the grader's output (stdout and stderr)
+//   task<N>.json        what the grader recorded (tests/support/report_listener.cpp)
+//   task<N>_*.png       the images of its reference-image test (tests/support/graded_images.cpp)
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+struct Task_Info {
+	int number;
+	std::string title;        // as in the README's table
+	std::string student_file; // what the student edits
+	std::string handout;
+};
+const std::vector<Task_Info>& lab_tasks();
+
+enum class Status { pass, fail, crashed, not_run };
+std::string status_name(Status status); // PASS, FAIL, CRASHED, NOT RUN
+
+struct Failure {
+	std::string kind;       // check, failure, unexpected exception, crash, ...
+	std::string where;      // file:line
+	std::string expression; // e.g. CHECK( ok ), may be empty
+	std::string expansion;  // the expression with values, may be empty
+	std::vector<std::string> messages;
+};
+
+struct Image_Test {
+	std::string scene;
+	std::filesystem::path render, reference, z_map;
+	bool pass = false;
+	std::string message;
+	double z_critical = 0.0;
+};
+
+struct Test_Case {
+	std::string name, where;
+	bool passed = false;
+	std::vector<Failure> failures;
+	size_t more_failures = 0; // failed checks beyond those recorded
+	std::vector<Image_Test> image_tests;
+};
+
+struct Task_Result {
+	Task_Info task;
+	Status status = Status::not_run;
+	std::string why; // one sentence on the status
+	std::vector<Test_Case> test_cases;
+	std::string running;  // the test case in progress when the grader stopped, if any
+	std::string log_file; // the file next to the report that tells more (grader output or build log)
+	std::string log_tail; // its last lines, shown when the grader crashed or did not build
+
+	size_t passed_count() const;
+};
+
+Task_Result read_task_result(const std::filesystem::path& dir, const Task_Info& task);
