@@ -60,6 +60,18 @@ bool BSDF::is_discrete() const {
 	return std::visit([](const auto& b) { return is_discrete_v<std::decay_t<decltype(b)>>; }, bsdf);
 }
 
+bool BSDF::is_black() const {
+	const Spectrum black{0.0f};
+	return std::visit(
+		[&](const auto& b) {
+			using T = std::decay_t<decltype(b)>;
+			if constexpr (std::is_same_v<T, BSDF_Lambertian>) return b.albedo == black;
+			else if constexpr (std::is_same_v<T, BSDF_Mirror>) return b.reflectance == black;
+			else return b.reflectance == black && b.transmittance == black;
+		},
+		bsdf);
+}
+
 Spectrum BSDF::albedo() const {
 	return std::visit(
 		[](const auto& b) -> Spectrum {

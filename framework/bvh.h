@@ -34,6 +34,10 @@ public:
 	// Task 3: the closest hit with t in ray.dist_bounds, visiting children front to back.
 	Trace hit(const Ray& ray) const;
 
+	// Not part of task 3: whether anything is hit with t in ray.dist_bounds, stopping at the first
+	// hit found (an any-hit query, as for shadow rays; bench/bvh_bench). The reference defines it.
+	bool occluded(const Ray& ray) const;
+
 	BBox bbox() const {
 		return nodes.empty() ? BBox{} : nodes[root_idx].bbox;
 	}

@@ -104,6 +104,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
 		}
 		Cli_Options options = parse_cli_options(args);
 		Scene scene = load_scene(options.scene);
+		override_environment(scene, options);
 		if (options.follow_pixel) {
 			follow(scene, options, out);
 		} else {

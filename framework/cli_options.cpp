@@ -55,6 +55,14 @@ std::pair<uint32_t, uint32_t> pixel(const std::string& option, const std::string
 	        whole_number<uint32_t>(option + " Y", text.substr(comma + 1), 0, 16383)};
 }
 
+// "uniform" or "importance": whether to importance-sample the environment image.
+bool env_sampling_named(const std::string& option, const std::string& name) {
+	if (name != "uniform" && name != "importance") {
+		throw Input_Error(option + ": expected uniform or importance, got '" + name + "'");
+	}
+	return name == "importance";
+}
+
 View view_named(const std::string& option, const std::string& name) {
 	View view;
 	if (!parse_view(name, view)) {
@@ -105,6 +113,15 @@ const std::vector<Option>& option_table() {
 		 [](auto& o, auto& name, auto& v) { o.follow_pixel = pixel(name, v); }},
 		{"--follow-samples", "N", "how many of that pixel's samples --follow-pixel prints, 1 to 1000 (default 1)",
 		 [](auto& o, auto& name, auto& v) { o.follow_samples = whole_number<uint32_t>(name, v, 1, 1000); }},
+		{"--no-light-sampling", nullptr,
+		 "sample the BSDF only: task 6 sees no lights (has_lights() is false); same image, other noise",
+		 [](auto& o, auto&, auto&) { o.light_sampling = false; }},
+		{"--no-roulette", nullptr, "no Russian roulette (task 4): every path runs to max-depth; same image",
+		 [](auto& o, auto&, auto&) { o.russian_roulette = false; }},
+		{"--env-sampling", "HOW",
+		 "uniform or importance: how task 7 samples the scene's environment image (default: the scene's "
+		 "\"importance_sampling\", true if absent)",
+		 [](auto& o, auto& name, auto& v) { o.env_importance_sampling = env_sampling_named(name, v); }},
 		{"--quiet", nullptr, "no progress bar and no summary (errors and warnings are still printed)",
 		 [](auto& o, auto&, auto&) { o.quiet = true; }},
 		{"--help", nullptr, "print this help and exit", [](auto&, auto&, auto&) {}},
@@ -207,12 +224,28 @@ Render_Settings override_settings(Render_Settings settings, const Cli_Options& o
 	settings.height = options.height.value_or(settings.height);
 	settings.max_depth = options.max_depth.value_or(settings.max_depth);
 	settings.seed = options.seed.value_or(settings.seed);
+	settings.light_sampling = settings.light_sampling && options.light_sampling;
+	settings.russian_roulette = settings.russian_roulette && options.russian_roulette;
 	if (uint64_t(settings.width) * settings.height > Render_Settings::MAX_PIXELS) {
 		throw Input_Error("--width/--height: expected at most " + std::to_string(Render_Settings::MAX_PIXELS) +
 		                  " pixels (e.g. 4096 x 4096), got " + std::to_string(settings.width) + " x " +
 		                  std::to_string(settings.height));
 	}
 	return settings;
+}
+
+void override_environment(Scene& scene, const Cli_Options& options) {
+	if (!options.env_importance_sampling) return;
+	Env_Map* map = scene.environment ? std::get_if<Env_Map>(&*scene.environment) : nullptr;
+	if (!map) throw Input_Error("--env-sampling: " + scene.path + " has no environment image to sample");
+	bool importance = *options.env_importance_sampling;
+	double total = 0.0;
+	for (Spectrum pixel : map->image.pixels) total += double(luminance(pixel));
+	if (importance && !(total > 0.0)) {
+		throw Input_Error("--env-sampling importance: the environment image of " + scene.path +
+		                  " is black everywhere, so it cannot be importance-sampled");
+	}
+	*map = Env_Map(std::move(map->image), importance); // builds the sampler only for importance
 }
 
 bool wants_help(const std::vector<std::string>& args) {

@@ -17,6 +17,9 @@ struct Cli_Options {
 	View view = View::path;
 	float exposure = 0.0f; // stops, for the PNG
 	bool quiet = false;
+	// Strategy switches (bench/README.md): --no-light-sampling, --no-roulette, --env-sampling.
+	bool light_sampling = true, russian_roulette = true;
+	std::optional<bool> env_importance_sampling; // unset: as the scene says
 	// --follow-pixel X,Y: print the life of that pixel's rays instead of rendering an image.
 	std::optional<std::pair<uint32_t, uint32_t>> follow_pixel;
 	uint32_t follow_samples = 1;
@@ -28,6 +31,10 @@ Cli_Options parse_cli_options(const std::vector<std::string>& args);
 // The scene's settings with the command line's overrides. Throws Input_Error for a film larger than
 // Render_Settings::MAX_PIXELS.
 Render_Settings override_settings(Render_Settings settings, const Cli_Options& options);
+
+// --env-sampling: rebuilds the scene's image environment as uniformly or importance-sampled. Throws
+// Input_Error if the scene has no image environment, or importance sampling is asked of a black one.
+void override_environment(Scene& scene, const Cli_Options& options);
 
 // --help: whether it was asked for, and the text.
 bool wants_help(const std::vector<std::string>& args);

@@ -18,6 +18,13 @@ float area_to_solid_angle(Vec3 from, Vec3 p, Vec3 n, float area) {
 	return std::isfinite(pdf) ? pdf : 0.0f;
 }
 
+// Barycentric slack of triangle_distance. Area_Lights::sample picks points anywhere on a triangle,
+// its edges included, and returns the float direction towards them; found again along that
+// direction, a point on an edge may lie a rounding error outside. Its pdf must not be 0 (the
+// one-sample mixture would then divide a light hit by the BSDF's half alone: a firefly), so points
+// up to 1e-5 of the triangle outside an edge count as on it, as in Triangle::hit.
+constexpr double EDGE_SLACK = 1e-5;
+
 // Möller–Trumbore in double precision: the distance to triangle t along from + s * dir, or -1.
 double triangle_distance(const Light_Triangle& t, Vec3 from, Vec3 dir) {
 	glm::dvec3 e1 = glm::dvec3(t.p1) - glm::dvec3(t.p0), e2 = glm::dvec3(t.p2) - glm::dvec3(t.p0);
@@ -29,7 +36,8 @@ double triangle_distance(const Light_Triangle& t, Vec3 from, Vec3 dir) {
 	glm::dvec3 q = glm::cross(s, e1);
 	double v = glm::dot(d, q) / det;
 	double dist = glm::dot(e2, q) / det;
-	return (u >= 0.0 && v >= 0.0 && u + v <= 1.0 && dist > 0.0) ? dist : -1.0;
+	bool inside = u >= -EDGE_SLACK && v >= -EDGE_SLACK && u + v <= 1.0 + EDGE_SLACK;
+	return (inside && dist > 0.0) ? dist : -1.0;
 }
 
 Area_Light mesh_light(const Tri_Mesh& mesh, const Mat4& to_world) {

@@ -73,6 +73,7 @@ public:
 	Spectrum evaluate(Vec3 out_dir, Vec3 in_dir) const; // 0 for discrete BSDFs
 	float pdf(Vec3 out_dir, Vec3 in_dir) const;         // 0 for discrete BSDFs
 	bool is_discrete() const;                           // mirror or glass
+	bool is_black() const; // reflects and transmits nothing (e.g. an area light): paths end there
 	Spectrum albedo() const; // a representative colour, for debug views
 
 	BSDF_Variant bsdf;

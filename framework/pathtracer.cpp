@@ -2,6 +2,7 @@
 #include "bvh_visits.h"
 #include "frame.h"
 #include "lifecycle.h"
+#include "time_profile.h"
 
 #include <array>
 #include <stdexcept>
@@ -47,6 +48,16 @@ Pathtracer::Pathtracer(const Scene& scene_, Render_Settings settings_, View view
 	: scene(scene_), settings(settings_), view(view_) {
 }
 
+namespace {
+// The scene's closest hit, counted and timed when a Time_Profile is active.
+Trace profiled_hit(const Scene& scene, const Ray& ray) {
+	Time_Profile* profile = Time_Profile::active();
+	if (profile) profile->rays++;
+	Profile_Timer timer(profile, &Time_Profile::tracing);
+	return scene.hit(ray);
+}
+} // namespace
+
 Spectrum Pathtracer::trace(RNG& rng, const Ray& ray) const {
 	Lifecycle_Recorder* recorder = Lifecycle_Recorder::active();
 	if (recorder) recorder->begin_ray(ray);
@@ -54,7 +65,7 @@ Spectrum Pathtracer::trace(RNG& rng, const Ray& ray) const {
 	if (view != View::path) {
 		radiance = debug_view(ray);
 	} else {
-		Trace hit = scene.hit(ray);
+		Trace hit = profiled_hit(scene, ray);
 		if (recorder) recorder->set_hit(hit);
 		radiance = hit.hit ? shade(rng, ray, hit) : scene.environment_radiance(ray.dir);
 	}
@@ -91,8 +102,10 @@ size_t light_count(const Scene& scene) {
 }
 } // namespace
 
+// settings.light_sampling = false (--no-light-sampling) hides the lights from task 6, which then
+// samples the BSDF only: the same image, by another estimator.
 bool Pathtracer::has_lights() const {
-	return light_count(scene) > 0;
+	return settings.light_sampling && light_count(scene) > 0;
 }
 
 Vec3 Pathtracer::sample_area_lights(RNG& rng, Vec3 from) const {
@@ -100,6 +113,9 @@ Vec3 Pathtracer::sample_area_lights(RNG& rng, Vec3 from) const {
 		throw std::logic_error("sample_area_lights: this scene has no lights; check has_lights() before "
 		                       "sampling them (handout §6.2)");
 	}
+	Time_Profile* profile = Time_Profile::active();
+	if (profile) profile->light_samples++;
+	Profile_Timer timer(profile, &Time_Profile::light_sampling);
 	uint32_t i = rng.integer(uint32_t(light_count(scene)));
 	Vec3 dir;
 	if (i < scene.area_lights.count()) {
@@ -118,6 +134,9 @@ Vec3 Pathtracer::sample_area_lights(RNG& rng, Vec3 from) const {
 
 float Pathtracer::area_lights_pdf(Vec3 from, Vec3 dir) const {
 	if (!has_lights()) return 0.0f; // no light can produce any direction
+	Time_Profile* profile = Time_Profile::active();
+	if (profile) profile->light_pdfs++;
+	Profile_Timer timer(profile, &Time_Profile::light_sampling);
 	float pdf = 0.0f;
 	for (size_t i = 0; i < scene.area_lights.count(); i++) pdf += scene.area_lights.pdf(i, from, dir);
 	if (scene.environment) pdf += std::visit([&](const auto& env) { return env.pdf(dir); }, *scene.environment);

@@ -55,7 +55,7 @@ public:
 	// way. Only meaningful when has_lights().
 	Vec3 sample_area_lights(RNG& rng, Vec3 from) const;
 	float area_lights_pdf(Vec3 from, Vec3 dir) const;
-	bool has_lights() const;
+	bool has_lights() const; // false without lights, or when settings.light_sampling is off
 
 	// Framework: the Part I shading (View::eye_light) of a hit.
 	Spectrum eye_light(const Ray& ray, const Trace& hit) const;

@@ -2,7 +2,10 @@
 
 void Scene::commit() {
 	area_lights.build(objects, materials);
-	bvh.build(std::move(objects), 1);
+	// A handful of objects gets no hierarchy: one leaf holding them all, so a ray tests them in turn
+	// after a single box test. More objects get a leaf each.
+	size_t leaf_size = objects.size() <= HANDFUL_OF_OBJECTS ? objects.size() : 1;
+	bvh.build(std::move(objects), leaf_size);
 	objects.clear();
 }
 

@@ -22,11 +22,17 @@ struct Render_Settings {
 	uint32_t samples = 16;   // samples per pixel
 	uint32_t max_depth = 8;  // maximum number of bounces (see pathtracer.h)
 	uint64_t seed = 0;
+	// Strategy switches, for comparing estimators (bench/README.md); both estimate the same image.
+	bool light_sampling = true;   // false: has_lights() is false, so task 6 samples the BSDF only
+	bool russian_roulette = true; // false: task 4 never cuts a path before max_depth
 };
 
 using Environment = std::variant<Env_Constant, Env_Map>;
 
 struct Scene {
+	// Scenes of at most this many objects are not worth a hierarchy (see commit()).
+	static constexpr size_t HANDFUL_OF_OBJECTS = 4;
+
 	// Collects the area lights and builds the top-level BVH over `objects`; call once after
 	// filling them in.
 	void commit();

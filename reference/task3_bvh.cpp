@@ -205,16 +205,20 @@ template<typename Primitive> void BVH<Primitive>::build(std::vector<Primitive>&&
 	if (!primitives.empty()) flat_pairs = flatten<Node, Flat_Pair>(nodes, root_idx);
 }
 
-template<typename Primitive> Trace BVH<Primitive>::hit(const Ray& ray) const {
-	// Front to back (handout §3.3) over flat_pairs: go down into the nearer child and keep the
-	// farther one on a stack, with the t at which the ray enters its box.
+namespace {
+
+// Front to back (handout §3.3) over flat_pairs: go down into the nearer child and keep the farther
+// one on a stack, with the t at which the ray enters its box. The closest-hit query (hit()) shrinks
+// the ray to each hit it finds; the any-hit query (occluded()) returns at the first.
+template<bool ANY_HIT, typename Primitive> Trace traverse(const BVH<Primitive>& bvh, const Ray& ray) {
+	using Flat_Node = typename BVH<Primitive>::Flat_Node;
 	struct Entry {
 		const Flat_Node* node;
 		float t_enter;
 	};
-	// One stack per thread, reused by every ray (BVH<Triangle> and BVH<Instance> each have their
-	// own, so a mesh traversed from inside the scene's traversal does not disturb it). It only
-	// grows: a push checks the size, a pop is an index decrement.
+	// One stack per thread and instantiation, reused by every ray (so a mesh traversed from inside
+	// the scene's traversal does not disturb it). It only grows: a push checks the size, a pop is
+	// an index decrement.
 	thread_local std::vector<Entry> stack(64);
 	size_t top = 0;
 
@@ -222,18 +226,21 @@ template<typename Primitive> Trace BVH<Primitive>::hit(const Ray& ray) const {
 	Slab_Ray slab_ray(ray);
 	Trace closest;
 	Vec2 times = r.dist_bounds;
-	if (flat_pairs.empty()) return closest;
-	const Flat_Node* node = &flat_pairs[0].child[0];
+	if (bvh.flat_pairs.empty()) return closest;
+	const Flat_Node* node = &bvh.flat_pairs[0].child[0];
 	if (!slab_test(node->min, node->max, slab_ray, times)) return closest;
 
 	while (true) {
 		if (node->count > 0) {
 			for (size_t i = node->first; i < node->first + node->count; i++) {
-				closest = Trace::min(closest, primitives[i].hit(r));
-				if (closest.hit) r.dist_bounds.y = closest.distance;
+				closest = Trace::min(closest, bvh.primitives[i].hit(r));
+				if (closest.hit) {
+					if constexpr (ANY_HIT) return closest;
+					r.dist_bounds.y = closest.distance;
+				}
 			}
 		} else {
-			const Flat_Node *left = &flat_pairs[node->first].child[0], *right = left + 1;
+			const Flat_Node *left = &bvh.flat_pairs[node->first].child[0], *right = left + 1;
 			Vec2 times_l = r.dist_bounds, times_r = r.dist_bounds;
 			bool hit_l = slab_test(left->min, left->max, slab_ray, times_l);
 			bool hit_r = slab_test(right->min, right->max, slab_ray, times_r);
@@ -255,6 +262,16 @@ template<typename Primitive> Trace BVH<Primitive>::hit(const Ray& ray) const {
 		node = stack[--top].node;
 	}
 	return closest;
+}
+
+} // namespace
+
+template<typename Primitive> Trace BVH<Primitive>::hit(const Ray& ray) const {
+	return traverse<false>(*this, ray);
+}
+
+template<typename Primitive> bool BVH<Primitive>::occluded(const Ray& ray) const {
+	return traverse<true>(*this, ray).hit;
 }
 
 // The framework builds BVHs of triangles (inside meshes) and of scene objects.

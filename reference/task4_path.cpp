@@ -85,6 +85,7 @@ Spectrum Pathtracer::shade(RNG& rng, const Ray& ray, const Trace& hit) const {
 	// L_o = L_e + (one-sample estimate of the reflected radiance).
 	Spectrum radiance = material.emitted(frame.to_local(out_dir));
 	if (ray.depth >= settings.max_depth) return radiance; // no bounce left: emission only
+	if (material.bsdf.is_black()) return radiance;         // nothing to sample (e.g. an area light)
 
 	Incoming_Sample s = sample_incoming(rng, hit, material.bsdf, out_dir);
 	Spectrum weight = sample_weight(s, hit.normal);
@@ -96,8 +97,9 @@ Spectrum Pathtracer::shade(RNG& rng, const Ray& ray, const Trace& hit) const {
 	// energy is never cut (white furnaces and clear glass stay noise-free), and a survivor's weight
 	// grows by at most 1 / albedo. (q from the sample's weight instead would kill almost every
 	// light-sampled direction, whose weight is small because its pdf is large, and multiply the
-	// few survivors by the inverse: fireflies.) max_depth bounds the length.
-	if (ray.depth >= ROULETTE_DEPTH) {
+	// few survivors by the inverse: fireflies.) max_depth bounds the length. settings.russian_roulette
+	// (--no-roulette) turns it off, to measure what it buys (bench/README.md).
+	if (settings.russian_roulette && ray.depth >= ROULETTE_DEPTH) {
 		float q = std::min(1.0f, max_component(material.bsdf.albedo()));
 		if (q < 1.0f) {
 			if (!rng.coin_flip(q)) return radiance;

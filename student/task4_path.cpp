@@ -39,8 +39,8 @@ Spectrum Pathtracer::shade(RNG& rng, const Ray& ray, const Trace& hit) const {
 	// 5. Trace the new ray with trace(): start it at hit.position with dist_bounds.x a small
 	//    distance that grows with the size of hit.position's coordinates, so it cannot hit the
 	//    surface it leaves at any scale, and give it depth ray.depth + 1.
-	// 6. Optionally, Russian roulette (handout §4.3): stop with some probability and divide by the
-	//    probability of continuing, so the average stays the same.
+	// 6. Optionally, Russian roulette (handout §4.3), only if settings.russian_roulette: stop with
+	//    some probability and divide by the probability of continuing, so the average stays the same.
 	//
 	// Until then this shows the Part I picture: surfaces lit from the eye.
 	(void)rng;

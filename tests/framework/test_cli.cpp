@@ -2,7 +2,9 @@
 // --help explains everything, bad input gives one "error:" line and writes nothing, a render
 // writes the images it reports.
 #include "cli.h"
+#include "cli_options.h"
 #include "image_io.h"
+#include "scene_loader.h"
 #include "temp_dir.h"
 #include "terminal.h"
 
@@ -108,7 +110,8 @@ TEST_CASE("cli: --help explains every option and every view, and succeeds") {
 	CHECK(result.status == 0);
 	CHECK(result.err.empty());
 	for (const char* word : {"SCENE.json", "--out", "--exr", "--variance", "--nan-map", "--spp", "--width", "--height",
-	                         "--max-depth", "--seed", "--threads", "--view", "--exposure", "--quiet", "--help", "path",
+	                         "--max-depth", "--seed", "--threads", "--view", "--exposure", "--no-light-sampling",
+	                         "--no-roulette", "--env-sampling", "uniform", "importance", "--quiet", "--help", "path",
 	                         "eye", "normals", "bvh", "direction"}) {
 		INFO("--help does not mention " << word);
 		CHECK(result.out.find(word) != std::string::npos);
@@ -153,6 +156,9 @@ TEST_CASE("cli: bad input gives one 'error:' line naming the problem, a non-zero
 		{{"sphere.json", "--nan-map", "nan.exr"}, {"--nan-map", ".png"}},
 		{{"sphere.json", "--exr", "same.exr", "--variance", "same.exr"}, {"same.exr"}},
 		{{"sphere.json", "--quiet=yes"}, {"--quiet"}},
+		{{"sphere.json", "--no-roulette=yes"}, {"--no-roulette"}},
+		{{"sphere.json", "--env-sampling", "sometimes"}, {"--env-sampling", "sometimes"}},
+		{{"sphere.json", "--env-sampling", "uniform"}, {"--env-sampling", "no environment image"}},
 		{{"sphere.json", "other.json"}, {"other.json"}},
 		{{"missing.json"}, {"missing.json"}},
 		{{"broken.json"}, {"broken.json"}},
@@ -219,6 +225,77 @@ TEST_CASE("cli: --seed chooses the random numbers: same seed same image, another
 	require_render({"sphere.json", "--quiet", "--exr", "c.exr", "--seed", "6"});
 	CHECK(read_image("a.exr").pixels == read_image("b.exr").pixels);
 	CHECK(read_image("a.exr").pixels != read_image("c.exr").pixels);
+}
+
+TEST_CASE("cli: --no-light-sampling and --no-roulette turn the strategies off for this run; both are on by default") {
+	In_Temp_Dir here;
+	Scene scene = load_scene("sphere.json"); // a constant sky: a light that task 6 may sample
+	Render_Settings plain = override_settings(scene.settings, parse_cli_options({"pathtracer", "sphere.json"}));
+	CHECK(plain.light_sampling);
+	CHECK(plain.russian_roulette);
+	CHECK(Pathtracer(scene, plain).has_lights());
+
+	Render_Settings off = override_settings(
+		scene.settings, parse_cli_options({"pathtracer", "sphere.json", "--no-light-sampling", "--no-roulette"}));
+	CHECK_FALSE(off.russian_roulette);
+	CHECK_FALSE(off.light_sampling);
+	INFO("--no-light-sampling must hide the lights from task 6: has_lights() false (framework/pathtracer.cpp)");
+	CHECK_FALSE(Pathtracer(scene, off).has_lights());
+	require_render({"sphere.json", "--quiet", "--no-light-sampling", "--no-roulette"});
+}
+
+TEST_CASE("cli: --env-sampling rebuilds the environment image as uniformly or importance-sampled") {
+	In_Temp_Dir here;
+	// A 4 x 2 sky, dim but for one bright texel, and the same sky black everywhere.
+	HDR_Image sky(4, 2, Spectrum{0.1f});
+	sky.at(1, 0) = Spectrum{100.0f};
+	write_exr("sky.exr", sky);
+	write_exr("black.exr", HDR_Image(4, 2));
+	auto scene_with = [](const std::string& file, bool importance) {
+		return std::string(R"({"camera": {"position": [0, 0, 3], "target": [0, 0, 0], "vertical_fov": 50},
+			"film": {"width": 8, "height": 6, "samples": 2, "max_depth": 2},
+			"materials": {"grey": {"type": "lambertian", "albedo": [0.6, 0.6, 0.6]}},
+			"objects": [{"type": "sphere", "radius": 1, "material": "grey"}],
+			"environment": {"type": "image", "file": ")") + file + R"(", "importance_sampling": )" +
+		       (importance ? "true" : "false") + "}}";
+	};
+	std::ofstream("importance.json") << scene_with("sky.exr", true);
+	std::ofstream("uniform.json") << scene_with("sky.exr", false);
+	std::ofstream("black.json") << scene_with("black.exr", false);
+	const float uniform_pdf = 1.0f / (4.0f * PI_F);
+	const Vec3 towards_bright = uv_to_direction(Vec2{1.5f / 4.0f, 0.5f / 2.0f}); // texel centres
+	const Vec3 towards_dim = uv_to_direction(Vec2{3.5f / 4.0f, 1.5f / 2.0f});
+
+	auto environment = [](const std::string& path, const std::string& how) {
+		Scene scene = load_scene(path);
+		override_environment(scene, parse_cli_options({"pathtracer", path, "--env-sampling", how}));
+		return std::get<Env_Map>(*scene.environment);
+	};
+	Env_Map uniform = environment("importance.json", "uniform");
+	CHECK_FALSE(uniform.importance_sampling);
+	CHECK(uniform.pdf(towards_bright) == Approx(uniform_pdf));
+	CHECK(uniform.image.pixels == sky.pixels); // the radiance is unchanged
+
+	Env_Map importance = environment("uniform.json", "importance");
+	CHECK(importance.importance_sampling);
+	REQUIRE(importance.sampler.pdf_texel.size() == 8u);
+	// Importance sampling favours the bright texel and avoids the dim ones (uniform would not).
+	CHECK(importance.pdf(towards_bright) > 2.0f * uniform_pdf);
+	CHECK(importance.pdf(towards_dim) < 0.5f * uniform_pdf);
+
+	// Without the option the scene's own choice stands.
+	Scene as_loaded = load_scene("uniform.json");
+	override_environment(as_loaded, parse_cli_options({"pathtracer", "uniform.json"}));
+	CHECK_FALSE(std::get<Env_Map>(*as_loaded.environment).importance_sampling);
+
+	// A black sky has nothing to importance-sample: an error, and no image.
+	Run black = run({"black.json", "--env-sampling", "importance"});
+	INFO("stderr: " << black.err);
+	CHECK(black.status != 0);
+	CHECK(black.err.find("--env-sampling importance") != std::string::npos);
+	CHECK_FALSE(fs::exists("out/black.png"));
+	require_render({"black.json", "--quiet", "--env-sampling", "uniform"});
+	require_render({"uniform.json", "--quiet", "--env-sampling", "importance"});
 }
 
 TEST_CASE("cli: --quiet prints nothing, and the progress bar appears only on a terminal") {

@@ -1,0 +1,446 @@
+// The convergence benchmark, "run time against error": for each experiment (a scene and two
+// strategies of the renderer that estimate the same image) it renders at spp = 1, 2, 4, ..., max
+// with several seeds, measures the wall time and the relMSE against a high-spp reference, fits the
+// slope of log relMSE against log time (-1 for an unbiased estimator), and compares the strategies'
+// efficiency 1 / (relMSE * time). Writes a CSV of every render and an SVG plot. See README.md.
+#include "cli_options.h"
+#include "convergence_metrics.h"
+#include "convergence_plot.h"
+#include "convergence_reference.h"
+#include "render.h"
+#include "scene_loader.h"
+#include "text_file.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+	return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// ---- The experiments ----------------------------------------------------------------------------
+
+// A strategy is a list of the renderer's own flags (framework/cli_options.cpp), so that
+// `pathtracer_reference SCENE FLAGS` renders exactly what the benchmark measures.
+struct Strategy {
+	const char* name;
+	std::vector<std::string> flags;
+};
+
+// Two unbiased strategies for the same image: a baseline and the improvement the lab teaches. The
+// reference is rendered by the improvement, with REFERENCE_FACTOR times the largest spp.
+struct Experiment {
+	const char* name;
+	const char* scene;
+	Strategy baseline, improved;
+};
+
+const std::vector<Experiment> EXPERIMENTS{
+	{"small_light", "scenes/cornell_small_light.json", {"bsdf only", {"--no-light-sampling"}}, {"mixture", {}}},
+	{"sun", "scenes/bunny_sun.json", {"uniform env", {"--env-sampling", "uniform"}},
+	 {"importance env", {"--env-sampling", "importance"}}},
+	{"roulette", "bench/convergence_closed_box.json", {"no roulette", {"--no-roulette"}}, {"roulette", {}}},
+};
+
+constexpr uint32_t REFERENCE_FACTOR = 64;
+constexpr uint64_t REFERENCE_SEED = 0; // the series use seeds 1, 2, ...: independent of it
+constexpr double SLOPE_MIN = -1.2, SLOPE_MAX = -0.8;
+
+// ---- Options ------------------------------------------------------------------------------------
+
+struct Options {
+	std::string out = LAB_BENCH_BINARY_DIR "/convergence";
+	std::string cache = LAB_BENCH_BINARY_DIR "/convergence_cache";
+	uint32_t seeds = 8, max_spp = 64, width = 64, height = 64, threads = 0;
+	std::string experiment; // empty: all
+};
+
+const char* const USAGE =
+	"usage: convergence_bench [--out DIR] [--seeds N] [--max-spp N] [--size WxH] [--threads T] [--experiment NAME]\n"
+	"\n"
+	"Renders each experiment's two strategies at spp = 1, 2, 4, ..., N (default 64; a power of two) on a WxH\n"
+	"film (default 64x64) with T threads (default 0 = all cores): --seeds renders (default 8) at N spp, and as\n"
+	"many more at smaller spp as keep the samples per point equal (8 x 64 renders at 1 spp). Measures wall time\n"
+	"and relMSE against a reference of 64 x N spp (cached under the build directory). Prints per strategy the\n"
+	"slope of log relMSE against log time and the efficiency 1 / (relMSE * time); writes DIR/convergence.csv\n"
+	"and DIR/convergence.svg (default DIR: build/bench/convergence). A slope outside [-1.2, -0.8] is an ERROR\n"
+	"(exit status 1) unless the slope against spp is inside (a timing problem) or a few renders carry the\n"
+	"means (a heavy tail): those are WARNINGs (see bench/README.md). Budgets much smaller than the defaults\n"
+	"may not see a heavy tail's rare paths at all, and its curve then looks biased.\n"
+	"\n"
+	"experiments (--experiment NAME runs one):\n"
+	"  small_light  scenes/cornell_small_light.json: bsdf only (--no-light-sampling) vs mixture\n"
+	"  sun          scenes/bunny_sun.json: uniform env vs importance env (--env-sampling uniform|importance)\n"
+	"  roulette     bench/convergence_closed_box.json: no roulette (--no-roulette) vs roulette\n";
+
+[[noreturn]] void usage_error(const std::string& message) {
+	std::fprintf(stderr, "convergence_bench: %s\n\n%s", message.c_str(), USAGE);
+	std::exit(2);
+}
+
+uint32_t positive(const std::string& option, const char* text) {
+	int value = std::atoi(text);
+	if (value < 1) usage_error(option + " needs a whole number >= 1, got '" + text + "'");
+	return uint32_t(value);
+}
+
+Options parse(int argc, char** argv) {
+	Options o;
+	for (int i = 1; i < argc; i++) {
+		std::string arg = argv[i];
+		if (arg == "-h" || arg == "--help") {
+			std::printf("%s", USAGE);
+			std::exit(0);
+		}
+		if (i + 1 >= argc) usage_error("unknown option or missing value: '" + arg + "'");
+		const char* value = argv[++i];
+		if (arg == "--out") o.out = value;
+		else if (arg == "--seeds") o.seeds = positive(arg, value);
+		else if (arg == "--max-spp") o.max_spp = positive(arg, value);
+		else if (arg == "--threads") o.threads = uint32_t(std::max(0, std::atoi(value)));
+		else if (arg == "--experiment") o.experiment = value;
+		else if (arg == "--size") {
+			if (std::sscanf(value, "%ux%u", &o.width, &o.height) != 2 || o.width < 1 || o.height < 1)
+				usage_error("--size needs WxH, e.g. 64x64, got '" + std::string(value) + "'");
+		} else usage_error("unknown option '" + arg + "'");
+	}
+	if (o.max_spp < 2) usage_error("--max-spp must be at least 2 (a series needs two points)");
+	while (o.max_spp & (o.max_spp - 1)) o.max_spp &= o.max_spp - 1; // the series: powers of two
+	return o;
+}
+
+// The number of renders (seeds) at `spp`: --seeds at the largest spp of the series, and as many
+// more at smaller spp as keep the samples per point equal. Rare, bright paths (a small light found
+// by BSDF sampling, the sun by uniform sampling) dominate the mean relMSE; with equal samples, each
+// point's mean includes as many of them, and is as trustworthy as the next.
+uint32_t renders_at(uint32_t spp, const Options& o) {
+	return o.seeds * (o.max_spp / spp);
+}
+
+// Every render of a series: spp 1, 2, 4, ..., max (level 0, 1, 2, ...), renders_at(spp) of each,
+// each with a seed of its own, in a shuffled order (fixed): a change in the machine's load then
+// spreads over all spp instead of bending the curve.
+struct Render_Job {
+	size_t level;
+	uint32_t spp;
+	uint64_t seed;
+};
+
+std::vector<Render_Job> render_jobs(const Options& o) {
+	std::vector<Render_Job> jobs;
+	uint64_t seed = REFERENCE_SEED + 1;
+	for (size_t level = 0; (1u << level) <= o.max_spp; level++)
+		for (uint32_t i = 0; i < renders_at(1u << level, o); i++) jobs.push_back({level, 1u << level, seed++});
+	std::shuffle(jobs.begin(), jobs.end(), std::mt19937(12345));
+	return jobs;
+}
+
+// ---- Rendering ----------------------------------------------------------------------------------
+
+// A strategy ready to render: its own scene (--env-sampling changes the scene) and settings.
+struct Setup {
+	std::unique_ptr<Scene> scene;
+	Render_Settings settings;
+};
+
+Setup set_up(const Experiment& experiment, const Strategy& strategy, const Options& o) {
+	std::vector<std::string> args{"convergence_bench", experiment.scene, "--width", std::to_string(o.width),
+	                              "--height", std::to_string(o.height)};
+	args.insert(args.end(), strategy.flags.begin(), strategy.flags.end());
+	Cli_Options cli = parse_cli_options(args);
+	Setup setup{std::make_unique<Scene>(load_scene(experiment.scene)), {}};
+	override_environment(*setup.scene, cli);
+	setup.scene->camera.aspect_ratio = float(o.width) / float(o.height); // the film's shape, not the scene's
+	setup.settings = override_settings(setup.scene->settings, cli);
+	return setup;
+}
+
+struct Measurement {
+	double seconds = 0.0; // wall time of render()
+	Render_Error error;
+};
+
+Measurement measure(const Setup& setup, uint32_t spp, uint64_t seed, const Reference& reference, uint32_t threads) {
+	Render_Settings settings = setup.settings;
+	settings.samples = spp;
+	settings.seed = seed;
+	Pathtracer pathtracer(*setup.scene, settings);
+	Render_Options options;
+	options.threads = threads;
+	Clock::time_point start = Clock::now();
+	Film film = render(pathtracer, options);
+	Measurement m;
+	m.seconds = seconds_since(start);
+	m.error = render_error(film, reference);
+	return m;
+}
+
+// ---- Results ------------------------------------------------------------------------------------
+
+// One strategy's series: per spp, the median time over the renders and the mean relMSE over the
+// renders minus the reference's share (reference_rel_mse).
+struct Curve {
+	std::vector<double> spp, seconds, rel_mse;
+	std::vector<double> skew; // per spp: the mean relMSE of the renders over their median
+	double slope_time = 0.0, slope_spp = 0.0;
+	double efficiency = 0.0; // median over the series of 1 / (relMSE * seconds)
+
+	// Rare, bright paths (fireflies) carry a mean: it is more than twice the median render's error.
+	// (A render's relMSE averages thousands of pixel channels: without them, mean and median agree.)
+	// The mean then depends on how many of those renders happened, and so does the slope.
+	static bool carried_by_few(double skew) {
+		return skew > 2.0;
+	}
+	bool heavy_tailed() const {
+		return std::any_of(skew.begin(), skew.end(), carried_by_few);
+	}
+	bool slope_ok() const {
+		return slope_time >= SLOPE_MIN && slope_time <= SLOPE_MAX;
+	}
+};
+
+struct Result {
+	const Experiment* experiment;
+	Curve curves[2]; // baseline, improved
+	double reference_share = 0.0;
+};
+
+double median(std::vector<double> values) {
+	std::sort(values.begin(), values.end());
+	size_t n = values.size();
+	return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+double mean(const std::vector<double>& values) {
+	double sum = 0.0;
+	for (double v : values) sum += v;
+	return sum / double(values.size());
+}
+
+void add_point(Curve& curve, uint32_t spp, const std::vector<Measurement>& seeds, double reference_share) {
+	std::vector<double> seconds, rel_mse;
+	for (const Measurement& m : seeds) {
+		seconds.push_back(m.seconds);
+		rel_mse.push_back(m.error.rel_mse);
+	}
+	curve.spp.push_back(spp);
+	curve.seconds.push_back(median(seconds));
+	curve.rel_mse.push_back(mean(rel_mse) - reference_share);
+	curve.skew.push_back(mean(rel_mse) / median(rel_mse));
+}
+
+void fit(Curve& curve) {
+	curve.slope_time = log_log_slope(curve.seconds, curve.rel_mse);
+	curve.slope_spp = log_log_slope(curve.spp, curve.rel_mse);
+	std::vector<double> efficiencies;
+	for (size_t i = 0; i < curve.spp.size(); i++) efficiencies.push_back(1.0 / (curve.rel_mse[i] * curve.seconds[i]));
+	curve.efficiency = median(efficiencies);
+}
+
+std::string joined(const std::vector<std::string>& words) {
+	std::string text;
+	for (const std::string& w : words) text += (text.empty() ? "" : " ") + w;
+	return text;
+}
+
+// One line per render.
+class Csv {
+public:
+	explicit Csv(const std::string& path) : file(path) {
+		file << "experiment,strategy,scene,spp,seed,seconds,relmse,variance,reference_relmse\n";
+	}
+	void row(const Experiment& e, const Strategy& s, uint32_t spp, uint64_t seed, const Measurement& m, double share) {
+		char line[512];
+		std::snprintf(line, sizeof line, "%s,%s,%s,%u,%llu,%.6g,%.6g,%.6g,%.6g\n", e.name, s.name, e.scene, spp,
+		              static_cast<unsigned long long>(seed), m.seconds, m.error.rel_mse, m.error.variance, share);
+		file << line;
+	}
+	bool good() const {
+		return bool(file);
+	}
+
+private:
+	std::ofstream file;
+};
+
+// ---- The experiment -----------------------------------------------------------------------------
+
+Cached_Reference reference_for(const Experiment& e, const Setup& best, const Options& o) {
+	Render_Settings settings = best.settings;
+	settings.samples = REFERENCE_FACTOR * o.max_spp;
+	settings.seed = REFERENCE_SEED;
+	std::string identity = read_text_file(e.scene) + "|" + joined(e.improved.flags);
+	Cached_Reference cached = cached_reference(Pathtracer(*best.scene, settings), identity, o.cache, o.threads);
+	if (cached.from_cache)
+		std::printf("reference: %u spp by \"%s\", from the cache %s (delete it after changing the renderer)\n",
+		            settings.samples, e.improved.name, cached.path.c_str());
+	else
+		std::printf("reference: %u spp by \"%s\", rendered in %.1f s, cached in %s\n", settings.samples,
+		            e.improved.name, cached.seconds, cached.path.c_str());
+	return cached;
+}
+
+Result run_experiment(const Experiment& e, const Options& o, Csv& csv) {
+	std::printf("\n== %s: %s, %u x %u, spp 1 to %u; %u renders at %u spp to %u at 1 spp ==\n", e.name, e.scene,
+	            o.width, o.height, o.max_spp, o.seeds, o.max_spp, renders_at(1, o));
+	const Strategy* strategies[2] = {&e.baseline, &e.improved};
+	Setup setups[2] = {set_up(e, e.baseline, o), set_up(e, e.improved, o)};
+	Reference reference = reference_for(e, setups[1], o).reference;
+	Result result{&e, {}, reference_rel_mse(reference)};
+	std::printf("the reference's own noise adds %.3g to every relMSE; it is subtracted before fitting\n",
+	            result.reference_share);
+
+	for (const Setup& setup : setups) measure(setup, 1, 0, reference, o.threads); // warm-up, not timed
+	std::vector<std::vector<Measurement>> runs[2]; // [strategy][level of the series]
+	std::vector<Render_Job> jobs = render_jobs(o);
+	std::printf("rendering %zu images per strategy, in a shuffled order...", jobs.size());
+	std::fflush(stdout);
+	Clock::time_point start = Clock::now();
+	for (const Render_Job& job : jobs) {
+		for (int k = 0; k < 2; k++) { // the strategies take turns: the same load for both
+			runs[k].resize(std::max(runs[k].size(), job.level + 1));
+			runs[k][job.level].push_back(measure(setups[k], job.spp, job.seed, reference, o.threads));
+			csv.row(e, *strategies[k], job.spp, job.seed, runs[k][job.level].back(), result.reference_share);
+		}
+	}
+
+	std::printf(" %.0f s\n%6s", seconds_since(start), "spp");
+	for (const Strategy* s : strategies) std::printf("   %16s: seconds   relMSE", s->name);
+	std::printf("\n");
+	for (size_t level = 0; level < runs[0].size(); level++) {
+		uint32_t spp = 1u << level;
+		std::printf("%6u", spp);
+		for (int k = 0; k < 2; k++) {
+			Curve& c = result.curves[k];
+			add_point(c, spp, runs[k][level], result.reference_share);
+			std::printf("   %16s  %8.4f  %8.3g%s", "", c.seconds.back(), c.rel_mse.back(),
+			            Curve::carried_by_few(c.skew.back()) ? "*" : " ");
+		}
+		std::printf("\n");
+	}
+	std::printf("(seconds: median over the renders; relMSE: their mean; *: more than twice their median)\n");
+	for (Curve& curve : result.curves) fit(curve);
+	return result;
+}
+
+// ---- Report -------------------------------------------------------------------------------------
+
+// An unbiased estimator's relMSE falls as 1 / spp, and so as 1 / time. A slope against time
+// outside [SLOPE_MIN, SLOPE_MAX] is an ERROR unless it has another explanation:
+// - "timing": the slope against spp is inside: the error converges, the times do not grow in
+//   proportion to spp (other processes on the machine, a render too short to time);
+// - "heavy tail": a few renders carry the mean of some point: rare, bright paths that the
+//   series has too few samples to average, so the slope cannot be judged at this budget.
+// Bias shows differently: the renders agree with each other, and the curve flattens. A heavy tail
+// is worth knowing about even when the slope passes: "ok, heavy tail".
+const char* verdict(const Curve& c) {
+	if (c.slope_ok()) return c.heavy_tailed() ? "ok, heavy tail" : "ok";
+	if (c.slope_spp >= SLOPE_MIN && c.slope_spp <= SLOPE_MAX) return "timing";
+	return c.heavy_tailed() ? "heavy tail" : "ERROR";
+}
+
+void print_table(const std::vector<Result>& results) {
+	std::printf("\n%-12s %-15s %-26s %10s %9s %11s %8s  %s\n", "experiment", "strategy", "renderer flags", "slope/time",
+	            "slope/spp", "efficiency", "ratio", "slope");
+	for (const Result& r : results) {
+		const Strategy* strategies[2] = {&r.experiment->baseline, &r.experiment->improved};
+		for (int k = 0; k < 2; k++) {
+			const Curve& c = r.curves[k];
+			std::string flags = strategies[k]->flags.empty() ? "(default)" : joined(strategies[k]->flags);
+			char ratio[32] = "";
+			if (k == 1) std::snprintf(ratio, sizeof ratio, "%.3gx", c.efficiency / r.curves[0].efficiency);
+			std::printf("%-12s %-15s %-26s %10.3f %9.3f %11.4g %8s  %s\n", k == 0 ? r.experiment->name : "",
+			            strategies[k]->name, flags.c_str(), c.slope_time, c.slope_spp, c.efficiency, ratio, verdict(c));
+		}
+	}
+	std::printf("(slopes: least squares of log relMSE on log seconds and on log spp; efficiency: median over the\n"
+	            " series of 1 / (relMSE * seconds) in 1/s; ratio: efficiency of the second strategy / the first)\n");
+}
+
+// Prints a WARNING or an ERROR for every slope outside the range (see verdict()); false on an ERROR.
+bool check_slopes(const std::vector<Result>& results) {
+	bool ok = true;
+	for (const Result& r : results) {
+		const Strategy* strategies[2] = {&r.experiment->baseline, &r.experiment->improved};
+		for (int k = 0; k < 2; k++) {
+			const Curve& c = r.curves[k];
+			std::string v = verdict(c);
+			if (c.slope_ok()) continue;
+			const char* why = v == "timing"       ? "the error converges, but the times do not grow in proportion to spp "
+			                                        "(is the machine busy?)"
+			                  : v == "heavy tail" ? "a few renders carry its means (rare bright paths: a heavy tail); "
+			                                        "more samples per point would tell whether it converges"
+			                                      : "the renders agree, yet the error does not fall as 1 / spp: look for bias";
+			std::printf("%s: %s / %s: slope %.3f against time is outside [%.1f, %.1f] (against spp: %.3f): %s\n",
+			            v == "ERROR" ? "ERROR" : "WARNING", r.experiment->name, strategies[k]->name, c.slope_time,
+			            SLOPE_MIN, SLOPE_MAX, c.slope_spp, why);
+			ok = ok && v != "ERROR";
+		}
+	}
+	return ok;
+}
+
+std::vector<Plot_Panel> plot_panels(const std::vector<Result>& results) {
+	std::vector<Plot_Panel> panels;
+	for (const Result& r : results) {
+		Plot_Panel panel{std::string(r.experiment->name) + ": " + r.experiment->scene, {}};
+		const Strategy* strategies[2] = {&r.experiment->baseline, &r.experiment->improved};
+		for (int k = 0; k < 2; k++) {
+			char label[96];
+			std::snprintf(label, sizeof label, "%s (slope %.2f)", strategies[k]->name, r.curves[k].slope_time);
+			const Curve& c = r.curves[k];
+			std::vector<bool> hollow;
+			for (double skew : c.skew) hollow.push_back(Curve::carried_by_few(skew));
+			panel.series.push_back({label, c.seconds, c.rel_mse, hollow});
+		}
+		panels.push_back(panel);
+	}
+	return panels;
+}
+
+int run(const Options& o) {
+	std::vector<const Experiment*> chosen;
+	for (const Experiment& e : EXPERIMENTS)
+		if (o.experiment.empty() || o.experiment == e.name) chosen.push_back(&e);
+	if (chosen.empty()) usage_error("unknown experiment '" + o.experiment + "'");
+
+	Clock::time_point start = Clock::now();
+	std::string csv_path = o.out + "/convergence.csv", svg_path = o.out + "/convergence.svg";
+	std::filesystem::create_directories(o.out);
+	Csv csv(csv_path);
+	std::vector<Result> results;
+	for (const Experiment* e : chosen) results.push_back(run_experiment(*e, o, csv));
+
+	print_table(results);
+	char title[160];
+	std::snprintf(title, sizeof title,
+	              "relMSE against render time (%u x %u pixels, spp 1 to %u, %u x %u samples per point)", o.width,
+	              o.height, o.max_spp, o.seeds, o.max_spp);
+	write_convergence_svg(svg_path, title, plot_panels(results));
+	if (!csv.good()) std::printf("ERROR: could not write %s\n", csv_path.c_str());
+	std::printf("\nwrote %s\nwrote %s\ntotal time %.0f s\n", csv_path.c_str(), svg_path.c_str(), seconds_since(start));
+	return check_slopes(results) && csv.good() ? 0 : 1;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+	try {
+		return run(parse(argc, argv));
+	} catch (const std::exception& e) { // a scene or an image that cannot be read or written
+		std::fprintf(stderr, "error: %s\n", e.what());
+		return 2;
+	}
+}
