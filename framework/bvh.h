@@ -52,17 +52,27 @@ public:
 	std::vector<Node> nodes;
 	size_t root_idx = 0;
 
-	// Traversal data: NOT part of Task 3 (your build() may leave flat_pairs empty; your hit() need
-	// not use it). The reference build() fills it from `nodes`, and its hit() traverses it
-	// instead: the same tree, laid out for speed (bench/README.md).
-	struct Flat_Node { // 32 bytes
-		Vec3 min;
-		uint32_t first; // interior: its children are flat_pairs[first]; leaf: its first primitive
-		Vec3 max;
-		uint32_t count; // leaf: number of primitives (>= 1); 0: interior node
+	// Traversal data: NOT part of Task 3 (your build() may leave wide_nodes empty; your hit() need
+	// not use it). The reference build() fills it from `nodes`, and its hit() traverses it instead:
+	// the same tree with every other level folded in, so that a node has up to four children whose
+	// boxes one slab test handles at once (bench/README.md).
+	struct alignas(64) Wide_Node { // 128 bytes: two cache lines
+		// The children's boxes, one array per bound and axis, so that one 4-wide instruction
+		// handles the same bound of all four children. An unused slot holds an empty box.
+		float min_x[4], min_y[4], min_z[4], max_x[4], max_y[4], max_z[4];
+		uint32_t first[4]; // interior child: its index in wide_nodes; leaf: its first primitive,
+		                   // or in BVH<Triangle> its first triangle pack
+		uint32_t count[4]; // leaf: its number of primitives (>= 1); interior child or unused: 0
+		                   // (an unused slot has first = ~0u and an empty box)
 	};
-	struct alignas(64) Flat_Pair { // two siblings, in one 64-byte cache line
-		Flat_Node child[2];
+	std::vector<Wide_Node> wide_nodes; // wide_nodes[0] is the root; empty without primitives
+
+	// BVH<Triangle> only: each leaf's triangles in packs of four, vertex v0 and edges e1 = v1 - v0,
+	// e2 = v2 - v0 one array per coordinate, so that one Möller–Trumbore test handles four. A
+	// leaf's packs are consecutive; lanes past its last triangle are unused (index ~0u).
+	struct alignas(32) Triangle_Pack { // 160 bytes, against 4 x 72 for the Triangles themselves
+		float v0[3][4], e1[3][4], e2[3][4];
+		uint32_t index[4]; // the triangle in `primitives`
 	};
-	std::vector<Flat_Pair> flat_pairs; // flat_pairs[0].child[0] is the root; empty without primitives
+	std::vector<Triangle_Pack> triangle_packs;
 };

@@ -52,8 +52,7 @@ namespace {
 // The scene's closest hit, counted and timed when a Time_Profile is active.
 Trace profiled_hit(const Scene& scene, const Ray& ray) {
 	Time_Profile* profile = Time_Profile::active();
-	if (profile) profile->rays++;
-	Profile_Timer timer(profile, &Time_Profile::tracing);
+	Profile_Timer timer(profile, &Time_Profile::tracing, profile ? profile->rays++ : 0);
 	return scene.hit(ray);
 }
 } // namespace
@@ -114,8 +113,7 @@ Vec3 Pathtracer::sample_area_lights(RNG& rng, Vec3 from) const {
 		                       "sampling them (handout §6.2)");
 	}
 	Time_Profile* profile = Time_Profile::active();
-	if (profile) profile->light_samples++;
-	Profile_Timer timer(profile, &Time_Profile::light_sampling);
+	Profile_Timer timer(profile, &Time_Profile::light_sampling, profile ? profile->light_samples++ : 0);
 	uint32_t i = rng.integer(uint32_t(light_count(scene)));
 	Vec3 dir;
 	if (i < scene.area_lights.count()) {
@@ -135,8 +133,7 @@ Vec3 Pathtracer::sample_area_lights(RNG& rng, Vec3 from) const {
 float Pathtracer::area_lights_pdf(Vec3 from, Vec3 dir) const {
 	if (!has_lights()) return 0.0f; // no light can produce any direction
 	Time_Profile* profile = Time_Profile::active();
-	if (profile) profile->light_pdfs++;
-	Profile_Timer timer(profile, &Time_Profile::light_sampling);
+	Profile_Timer timer(profile, &Time_Profile::light_sampling, profile ? profile->light_pdfs++ : 0);
 	float pdf = 0.0f;
 	for (size_t i = 0; i < scene.area_lights.count(); i++) pdf += scene.area_lights.pdf(i, from, dir);
 	if (scene.environment) pdf += std::visit([&](const auto& env) { return env.pdf(dir); }, *scene.environment);

@@ -30,15 +30,19 @@ private:
 	Time_Profile* previous = nullptr;
 };
 
-// Adds the time from its construction to its destruction to `total`, if there is a profile.
+// Times the `call`-th call of a kind (numbered from 0) if there is a profile, one call in
+// TIMED_EVERY: it adds TIMED_EVERY times the time from its construction to its destruction to
+// `total`. (Reading the clock at every call made the profiled render a third slower.)
 class Profile_Timer {
 public:
-	explicit Profile_Timer(Time_Profile* profile, Time_Profile::Clock::duration Time_Profile::*total)
-		: profile(profile), total(total) {
-		if (profile) start = Time_Profile::Clock::now();
+	static constexpr uint64_t TIMED_EVERY = 8;
+
+	Profile_Timer(Time_Profile* profile, Time_Profile::Clock::duration Time_Profile::*total, uint64_t call)
+		: profile(call % TIMED_EVERY == 0 ? profile : nullptr), total(total) {
+		if (this->profile) start = Time_Profile::Clock::now();
 	}
 	~Profile_Timer() {
-		if (profile) profile->*total += Time_Profile::Clock::now() - start;
+		if (profile) profile->*total += TIMED_EVERY * (Time_Profile::Clock::now() - start);
 	}
 	Profile_Timer(const Profile_Timer&) = delete;
 	Profile_Timer& operator=(const Profile_Timer&) = delete;
