@@ -33,9 +33,9 @@ struct Slab_Ray {
 }
 
 // Slab test (handout §3.1): the box is hit where all three slabs and `times` overlap. Comparisons
-// are <=, so flat boxes (min == max) are hit. Written out per axis and inlined, since traversal
-// spends much of its time here (it was a third of the time as an out-of-line loop).
-[[gnu::always_inline]] inline bool slab_test(Vec3 min, Vec3 max, const Slab_Ray& ray, Vec2& times) {
+// are <=, so flat boxes (min == max) are hit. (BBox::hit; traversal tests four boxes at once the
+// same way, hit_children below.)
+inline bool slab_test(Vec3 min, Vec3 max, const Slab_Ray& ray, Vec2& times) {
 	float t_enter = times.x, t_exit = times.y;
 	narrow(min.x, max.x, ray.point.x, ray.inv_dir.x, ray.negative[0], t_enter, t_exit);
 	narrow(min.y, max.y, ray.point.y, ray.inv_dir.y, ray.negative[1], t_enter, t_exit);
@@ -225,7 +225,7 @@ std::vector<Wide_Node> widen(const std::vector<Node>& nodes, size_t root_idx, Le
 			children.push_back(nodes[opened].r);
 		}
 		Wide_Node node;
-		for (int slot = 0; slot < 4; slot++) { // unused slots: an empty box, which no ray hits
+		for (int slot = 0; slot < 4; slot++) { // unused slots: an empty box and UNUSED_SLOT
 			BBox box = slot < int(children.size()) ? nodes[children[slot]].bbox : BBox{};
 			node.min_x[slot] = box.min.x, node.min_y[slot] = box.min.y, node.min_z[slot] = box.min.z;
 			node.max_x[slot] = box.max.x, node.max_y[slot] = box.max.y, node.max_z[slot] = box.max.z;
