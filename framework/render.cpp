@@ -32,6 +32,7 @@ void render_tile(const Pathtracer& pt, const Render_Settings& settings, const Ti
 		}
 	}
 }
+
 // options.tile_size, or smaller for a small film: at least TILES_PER_THREAD tiles for each thread,
 // so that the threads finish within a small tile of each other (a 64 x 64 film in 16-pixel tiles
 // has 16 tiles, and two threads scaled 1.83x on it; in 8-pixel tiles, 64). The image does not
