@@ -40,7 +40,9 @@ inline double timed_parallel_for(size_t count, unsigned threads, const std::func
 	return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// The middle value; for an even count, the mean of the two middle values.
 inline double median(std::vector<double> values) {
-	std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
-	return values[values.size() / 2];
+	std::sort(values.begin(), values.end());
+	size_t n = values.size();
+	return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }

@@ -3,6 +3,7 @@
 // with several seeds, measures the wall time and the relMSE against a high-spp reference, fits the
 // slope of log relMSE against log time (-1 for an unbiased estimator), and compares the strategies'
 // efficiency 1 / (relMSE * time). Writes a CSV of every render and an SVG plot. See README.md.
+#include "bench_timing.h"
 #include "cli_options.h"
 #include "convergence_metrics.h"
 #include "convergence_plot.h"
@@ -216,12 +217,6 @@ struct Result {
 	Curve curves[2]; // baseline, improved
 	double reference_share = 0.0;
 };
-
-double median(std::vector<double> values) {
-	std::sort(values.begin(), values.end());
-	size_t n = values.size();
-	return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
 
 double mean(const std::vector<double>& values) {
 	double sum = 0.0;

@@ -239,9 +239,7 @@ void override_environment(Scene& scene, const Cli_Options& options) {
 	Env_Map* map = scene.environment ? std::get_if<Env_Map>(&*scene.environment) : nullptr;
 	if (!map) throw Input_Error("--env-sampling: " + scene.path + " has no environment image to sample");
 	bool importance = *options.env_importance_sampling;
-	double total = 0.0;
-	for (Spectrum pixel : map->image.pixels) total += double(luminance(pixel));
-	if (importance && !(total > 0.0)) {
+	if (importance && !(total_luminance(map->image) > 0.0)) {
 		throw Input_Error("--env-sampling importance: the environment image of " + scene.path +
 		                  " is black everywhere, so it cannot be importance-sampled");
 	}

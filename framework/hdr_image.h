@@ -20,3 +20,11 @@ struct HDR_Image {
 	uint32_t w = 0, h = 0;
 	std::vector<Spectrum> pixels;
 };
+
+// The sum of the pixels' luminance, in double precision: 0 for a black image, which an environment
+// cannot be importance-sampled from.
+inline double total_luminance(const HDR_Image& image) {
+	double total = 0.0;
+	for (Spectrum pixel : image.pixels) total += double(luminance(pixel));
+	return total;
+}

@@ -107,7 +107,6 @@ HDR_Image read_environment_image(const Json_Element& env, bool importance_sampli
 	}
 	if (image.w == 0 || image.h == 0 || image.pixels.size() != size_t(image.w) * image.h) file.error("the image is empty");
 	float scale = env.has("scale") ? env["scale"].positive_number() : 1.0f;
-	double total = 0.0;
 	for (size_t i = 0; i < image.pixels.size(); i++) {
 		Spectrum& pixel = image.pixels[i];
 		pixel *= scale;
@@ -115,8 +114,8 @@ HDR_Image read_environment_image(const Json_Element& env, bool importance_sampli
 			file.error("pixel (" + std::to_string(i % image.w) + ", " + std::to_string(i / image.w) +
 			           ") times \"scale\" is not a finite, non-negative radiance");
 		}
-		total += double(luminance(pixel));
 	}
+	double total = total_luminance(image);
 	if (!(total < double(std::numeric_limits<float>::max()))) file.error("the image's total luminance overflows a float");
 	if (importance_sampling && !(total > 0.0)) {
 		file.error("the image is black everywhere, so it cannot be importance-sampled (set \"importance_sampling\": false)");
