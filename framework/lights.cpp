@@ -122,9 +122,16 @@ float Area_Lights::pdf(size_t i, Vec3 from, Vec3 dir) const {
 		}
 		return pdf;
 	}
+	// Every point of the light on the ray adds its density, but a point on an edge is claimed by
+	// both triangles that share it (EDGE_SLACK): hits at the same distance along the ray (to the
+	// slack) are the same point and count once.
+	std::vector<double> counted;
 	for (const Light_Triangle& tri : light.triangles) {
 		double s = triangle_distance(tri, from, dir);
 		if (s <= 0.0) continue;
+		auto same_point = [s](double other) { return std::abs(s - other) <= 10.0 * EDGE_SLACK * s; };
+		if (std::any_of(counted.begin(), counted.end(), same_point)) continue;
+		counted.push_back(s);
 		Vec3 n = glm::normalize(glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0));
 		pdf += area_to_solid_angle(from, from + float(s) * dir, n, light.area);
 	}

@@ -97,14 +97,18 @@ Spectrum Pathtracer::shade(RNG& rng, const Ray& ray, const Trace& hit) const {
 	if (weight == Spectrum{0.0f}) return radiance;
 
 	// Russian roulette: continue with probability q and divide by q, so the expectation is
-	// unchanged. q = min(1, largest component of the surface's albedo): a surface that keeps all the
-	// energy is never cut (white furnaces and clear glass stay noise-free), and a survivor's weight
-	// grows by at most 1 / albedo. (q from the sample's weight instead would kill almost every
-	// light-sampled direction, whose weight is small because its pdf is large, and multiply the
-	// few survivors by the inverse: fireflies.) max_depth bounds the length. settings.russian_roulette
-	// (--no-roulette) turns it off, to measure what it buys (bench/README.md).
+	// unchanged, but the second moment of the weight grows by 1 / q. q = min(1, max(largest albedo
+	// component, largest weight component)):
+	// - a weight of 1 or more is never cut. With task 6's mixture a BSDF-sampled direction weighs
+	//   2 * albedo (its pdf is half the BSDF's); cut with q = albedo, its second moment grew by a
+	//   factor 2 * albedo > 1 per bounce, and rare long paths became fireflies (bench/README.md);
+	// - a small weight is cut no more often than the albedo says: a direction aimed at a light has a
+	//   small weight because its pdf is large, and q = weight would kill almost all of them and
+	//   multiply the few survivors by the inverse (fireflies, handout §4.3);
+	// - a surface that keeps all the energy is never cut (white furnaces, clear glass).
+	// max_depth bounds the length. settings.russian_roulette (--no-roulette) turns it off.
 	if (settings.russian_roulette && ray.depth >= ROULETTE_DEPTH) {
-		float q = std::min(1.0f, max_component(material.bsdf.albedo()));
+		float q = std::min(1.0f, std::max(max_component(material.bsdf.albedo()), max_component(weight)));
 		if (q < 1.0f) {
 			if (!rng.coin_flip(q)) return radiance;
 			weight /= q;

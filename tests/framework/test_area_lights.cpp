@@ -307,3 +307,24 @@ TEST_CASE("an emissive sphere must be scaled uniformly", "[area_lights]") {
 	           glm::scale(Mat4{1.0f}, Vec3{1.0f, 2.0f, 1.0f}));
 	CHECK_THROWS_AS(scene.commit(), Input_Error);
 }
+
+TEST_CASE("area_lights_pdf counts a point on the edge two triangles of a light share once", "[area_lights]") {
+	// A square light is two triangles sharing a diagonal; each accepts points a little outside its
+	// edges (lights.cpp, EDGE_SLACK). Along either diagonal of the square, the density seen from a
+	// point below must be the same smooth d^2 / (A cos) as just beside it, not twice that.
+	Scene scene = ceiling_light_scene(0.5f, 1.0f);
+	Pathtracer pt(scene, Render_Settings{});
+	const Vec3 from{0.2f, 0.0f, -0.1f};
+	for (float sign : {1.0f, -1.0f}) {
+		for (float t = 0.1f; t < 0.95f; t += 0.1f) {
+			Vec3 on_diagonal{t - 0.5f, 1.0f, sign * (t - 0.5f)};
+			Vec3 beside = on_diagonal + Vec3{1e-3f, 0.0f, -sign * 1e-3f};
+			float pdf_on = pt.area_lights_pdf(from, glm::normalize(on_diagonal - from));
+			float pdf_beside = pt.area_lights_pdf(from, glm::normalize(beside - from));
+			INFO("point on a diagonal of the square light " << on_diagonal.x << ", " << on_diagonal.z
+			                                                 << ": pdf " << pdf_on << ", just beside it " << pdf_beside);
+			REQUIRE(pdf_beside > 0.0f);
+			CHECK(std::abs(pdf_on / pdf_beside - 1.0f) < 0.01f);
+		}
+	}
+}
