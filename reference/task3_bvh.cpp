@@ -127,7 +127,7 @@ Split best_split(const Build_Item* begin, const Build_Item* end, const BBox& cen
 }
 
 // --- Traversal data (bench/README.md). The tree above is the lab's binary tree; build() then folds
-// it into BVH::wide_nodes, four children to a node, and packs each leaf's triangles four at a time
+// it into BVH::wide_nodes, eight children to a node, and packs each leaf's triangles four at a time
 // (BVH::triangle_packs); hit() traverses those. Measured with bench/bvh_bench (one thread, ratio to
 // Embree's rtcIntersect1 in the same run, medians; primary / incoherent / occlusion), Stanford bunny:
 // - `nodes` with a std::vector stack:                                         0.33 / 0.23 / 0.17
@@ -135,6 +135,10 @@ Split best_split(const Build_Item* begin, const Build_Item* end, const BBox& cen
 // - occlusion rays as an any-hit query (BVH::occluded) instead of closest hit:  0.62 / 0.29 / 0.25
 // - four children to a node, their boxes tested at once:                       0.71 / 0.33 / 0.29
 // - leaf triangles in packs of four, tested at once as a filter:               0.78 / 0.34 / 0.29
+// - eight children to a node (two 4-wide tests), a third fewer node loads:    0.87 / 0.42 / 0.31
+//   (the same day, alternating runs with the 4-wide nodes: 0.62 / 0.35 / 0.28 against 0.61 /
+//   0.34 / 0.26 on the bunny, and 0.53 / 0.52 / 0.44 against 0.52 / 0.50 / 0.43 on large.json:
+//   a few percent on incoherent and occlusion rays, within the machine's noise on primary ones)
 // The traversal waits on memory: most of its time goes to the first loads of a node and a pack.
 // (Prefetching the far child bought nothing measurable.)
 
@@ -143,32 +147,36 @@ Split best_split(const Build_Item* begin, const Build_Item* end, const BBox& cen
 using Float4 = float __attribute__((vector_size(16)));
 using Int4 = int32_t __attribute__((vector_size(16)));
 
-Float4 load4(const float (&values)[4]) {
+Float4 load4(const float* values) {
 	Float4 v;
 	std::memcpy(&v, values, sizeof v);
 	return v;
 }
 
-// Slab test of a wide node's four children at once (handout §3.1, as slab_test above, lane by
+// Slab test of a wide node's children, four at once (handout §3.1, as slab_test above, lane by
 // lane): returns a bit per child hit within `bounds`, and where the ray enters each child's box.
 template<typename Wide_Node>
 [[gnu::always_inline]] inline unsigned hit_children(const Wide_Node& node, const Slab_Ray& ray, Vec2 bounds,
-                                                    Float4& t_enter) {
-	Float4 enter = Float4{} + bounds.x, exit = Float4{} + bounds.y;
-	const float(*lo[3])[4] = {&node.min_x, &node.min_y, &node.min_z};
-	const float(*hi[3])[4] = {&node.max_x, &node.max_y, &node.max_z};
-	for (int axis = 0; axis < 3; axis++) {
-		bool negative = ray.negative[axis];
-		Float4 t_near = (load4(negative ? *hi[axis] : *lo[axis]) - ray.point[axis]) * ray.inv_dir[axis];
-		Float4 t_far = (load4(negative ? *lo[axis] : *hi[axis]) - ray.point[axis]) * ray.inv_dir[axis];
-		// As in narrow(): a NaN (0 * inf, a ray inside a slab's plane) fails the comparison and
-		// leaves the interval unchanged.
-		enter = t_near > enter ? t_near : enter;
-		exit = t_far < exit ? t_far : exit;
+                                                    float (&t_enter)[Wide_Node::WIDTH]) {
+	const float* lo[3] = {node.min_x, node.min_y, node.min_z};
+	const float* hi[3] = {node.max_x, node.max_y, node.max_z};
+	unsigned mask = 0;
+	for (int group = 0; group < Wide_Node::WIDTH; group += 4) { // four children at a time
+		Float4 enter = Float4{} + bounds.x, exit = Float4{} + bounds.y;
+		for (int axis = 0; axis < 3; axis++) {
+			bool negative = ray.negative[axis];
+			Float4 t_near = (load4((negative ? hi[axis] : lo[axis]) + group) - ray.point[axis]) * ray.inv_dir[axis];
+			Float4 t_far = (load4((negative ? lo[axis] : hi[axis]) + group) - ray.point[axis]) * ray.inv_dir[axis];
+			// As in narrow(): a NaN (0 * inf, a ray inside a slab's plane) fails the comparison and
+			// leaves the interval unchanged.
+			enter = t_near > enter ? t_near : enter;
+			exit = t_far < exit ? t_far : exit;
+		}
+		std::memcpy(t_enter + group, &enter, sizeof enter);
+		Int4 hit = enter <= exit;
+		mask |= ((hit[0] & 1) | (hit[1] & 2) | (hit[2] & 4) | (hit[3] & 8)) << group;
 	}
-	t_enter = enter;
-	Int4 hit = enter <= exit;
-	return (hit[0] & 1) | (hit[1] & 2) | (hit[2] & 4) | (hit[3] & 8);
+	return mask;
 }
 
 // Appends the packs of triangles[start, start + size) to `packs`; returns the index of the first.
@@ -198,9 +206,9 @@ uint32_t pack_triangles(const std::vector<Triangle>& triangles, size_t start, si
 // every box (see narrow()), so traversal checks this mark too.
 constexpr uint32_t UNUSED_SLOT = ~0u;
 
-// Folds the binary tree into nodes of up to four children, from the root down: a wide node takes
-// its binary node's two children, then opens the interior child of largest surface area (the one a
-// ray most likely enters) into its two children, until it has four or only leaves. A leaf of the
+// Folds the binary tree into nodes of up to Wide_Node::WIDTH (eight) children, from the root down: a
+// wide node takes its binary node's two children, then opens the interior child of largest surface
+// area (the one a ray most likely enters) into its two children, until it has eight or only leaves. A leaf of the
 // binary tree stays a leaf, a child slot with count > 0.
 template<typename Node, typename Wide_Node, typename Leaf_First>
 std::vector<Wide_Node> widen(const std::vector<Node>& nodes, size_t root_idx, Leaf_First leaf_first) {
@@ -212,7 +220,7 @@ std::vector<Wide_Node> widen(const std::vector<Node>& nodes, size_t root_idx, Le
 		todo.pop_back();
 		std::vector<size_t> children{binary}; // the root as a single child when it is a leaf
 		if (!nodes[binary].is_leaf()) children = {nodes[binary].l, nodes[binary].r};
-		while (children.size() < 4) {
+		while (children.size() < size_t(Wide_Node::WIDTH)) {
 			auto largest = children.end();
 			for (auto c = children.begin(); c != children.end(); c++) {
 				if (!nodes[*c].is_leaf() &&
@@ -225,7 +233,7 @@ std::vector<Wide_Node> widen(const std::vector<Node>& nodes, size_t root_idx, Le
 			children.push_back(nodes[opened].r);
 		}
 		Wide_Node node;
-		for (int slot = 0; slot < 4; slot++) { // unused slots: an empty box and UNUSED_SLOT
+		for (int slot = 0; slot < Wide_Node::WIDTH; slot++) { // unused slots: an empty box and UNUSED_SLOT
 			BBox box = slot < int(children.size()) ? nodes[children[slot]].bbox : BBox{};
 			node.min_x[slot] = box.min.x, node.min_y[slot] = box.min.y, node.min_z[slot] = box.min.z;
 			node.max_x[slot] = box.max.x, node.max_y[slot] = box.max.y, node.max_z[slot] = box.max.z;
@@ -338,7 +346,7 @@ template<typename Triangle_Pack>
 	return (hit[0] & 1) | (hit[1] & 2) | (hit[2] & 4) | (hit[3] & 8);
 }
 
-// Front to back (handout §3.3) over wide_nodes: test a node's four children at once, go down into
+// Front to back (handout §3.3) over wide_nodes: test a node's children four at a time, go down into
 // the nearest child hit and keep the others on a stack, with the t at which the ray enters them.
 // The closest-hit query (hit()) shrinks the ray to each hit it finds; the any-hit query
 // (occluded()) returns at the first.
@@ -381,12 +389,13 @@ template<bool ANY_HIT, typename Primitive> Trace traverse(const BVH<Primitive>& 
 			}
 		} else {
 			const auto& node = bvh.wide_nodes[child.first];
-			Float4 t_enter;
+			constexpr int WIDTH = BVH<Primitive>::Wide_Node::WIDTH;
+			float t_enter[WIDTH];
 			unsigned mask = hit_children(node, slab_ray, r.dist_bounds, t_enter);
-			// The children hit, nearest first (insertion sort of at most four).
-			Child hits[4];
+			// The children hit, nearest first (insertion sort).
+			Child hits[WIDTH];
 			int count = 0;
-			for (int slot = 0; slot < 4; slot++) {
+			for (int slot = 0; slot < WIDTH; slot++) {
 				if (!(mask & (1u << slot)) || node.first[slot] == UNUSED_SLOT) continue;
 				Child c{node.first[slot], node.count[slot], t_enter[slot]};
 				int at = count++;
@@ -394,7 +403,7 @@ template<bool ANY_HIT, typename Primitive> Trace traverse(const BVH<Primitive>& 
 				hits[at] = c;
 			}
 			if (count > 0) {
-				if (top + 3 > stack.size()) stack.resize(2 * stack.size());
+				if (top + WIDTH > stack.size()) stack.resize(2 * stack.size());
 				for (int i = count - 1; i > 0; i--) stack[top++] = hits[i]; // the nearest is popped first
 				child = hits[0];
 				continue;
