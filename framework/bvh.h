@@ -54,16 +54,17 @@ public:
 
 	// Traversal data: NOT part of Task 3 (your build() may leave wide_nodes empty; your hit() need
 	// not use it). The reference build() fills it from `nodes`, and its hit() traverses it instead:
-	// the same tree with every other level folded in, so that a node has up to four children whose
-	// boxes one slab test handles at once (bench/README.md).
-	struct alignas(64) Wide_Node { // 128 bytes: two cache lines
+	// the same tree with two of every three levels folded in, so that a node has up to eight
+	// children whose boxes two 4-wide slab tests handle (bench/README.md).
+	struct alignas(64) Wide_Node { // 256 bytes: four cache lines
+		static constexpr int WIDTH = 8; // children per node
 		// The children's boxes, one array per bound and axis, so that one 4-wide instruction
-		// handles the same bound of all four children. An unused slot holds an empty box.
-		float min_x[4], min_y[4], min_z[4], max_x[4], max_y[4], max_z[4];
-		uint32_t first[4]; // interior child: its index in wide_nodes; leaf: its first primitive,
-		                   // or in BVH<Triangle> its first triangle pack
-		uint32_t count[4]; // leaf: its number of primitives (>= 1); interior child or unused: 0
-		                   // (an unused slot has first = ~0u and an empty box)
+		// handles the same bound of four children. An unused slot holds an empty box.
+		float min_x[WIDTH], min_y[WIDTH], min_z[WIDTH], max_x[WIDTH], max_y[WIDTH], max_z[WIDTH];
+		uint32_t first[WIDTH]; // interior child: its index in wide_nodes; leaf: its first primitive,
+		                       // or in BVH<Triangle> its first triangle pack
+		uint32_t count[WIDTH]; // leaf: its number of primitives (>= 1); interior child or unused: 0
+		                       // (an unused slot has first = ~0u and an empty box)
 	};
 	std::vector<Wide_Node> wide_nodes; // wide_nodes[0] is the root; empty without primitives
 

@@ -127,7 +127,7 @@ Split best_split(const Build_Item* begin, const Build_Item* end, const BBox& cen
 }
 
 // --- Traversal data (bench/README.md). The tree above is the lab's binary tree; build() then folds
-// it into BVH::wide_nodes, four children to a node, and packs each leaf's triangles four at a time
+// it into BVH::wide_nodes, eight children to a node, and packs each leaf's triangles four at a time
 // (BVH::triangle_packs); hit() traverses those. Measured with bench/bvh_bench (one thread, ratio to
 // Embree's rtcIntersect1 in the same run, medians; primary / incoherent / occlusion), Stanford bunny:
 // - `nodes` with a std::vector stack:                                         0.33 / 0.23 / 0.17
@@ -135,40 +135,64 @@ Split best_split(const Build_Item* begin, const Build_Item* end, const BBox& cen
 // - occlusion rays as an any-hit query (BVH::occluded) instead of closest hit:  0.62 / 0.29 / 0.25
 // - four children to a node, their boxes tested at once:                       0.71 / 0.33 / 0.29
 // - leaf triangles in packs of four, tested at once as a filter:               0.78 / 0.34 / 0.29
+// - eight children to a node (two 4-wide tests), a third fewer node loads:    0.87 / 0.42 / 0.31
+//   (the same day, alternating runs with the 4-wide nodes: 0.62 / 0.35 / 0.28 against 0.61 /
+//   0.34 / 0.26 on the bunny, and 0.53 / 0.52 / 0.44 against 0.52 / 0.50 / 0.43 on large.json:
+//   a few percent on incoherent and occlusion rays, within the machine's noise on primary ones)
+// - the children hit ordered without a sort when one or two are hit (most nodes), unused slots
+//   masked in the vector test; alternating runs with the step above, 5 on the bunny:
+//   0.67 / 0.44 / 0.35 against 0.62 / 0.39 / 0.30 (large.json, 2 runs: 0.56 / 0.52 / 0.43
+//   against 0.55 / 0.55 / 0.46, within its noise)
+// - the packs of all leaves a node's test finds prefetched at once; alternating runs with the step
+//   above, 4 on the bunny: 0.67 / 0.48 / 0.35 against 0.67 / 0.43 / 0.35 (large.json, 2 runs:
+//   0.60 / 0.61 / 0.49 against 0.54 / 0.55 / 0.49)
+// - occluded(): the children hit taken in slot order, not nearest first; alternating runs with the
+//   step above, 4 on the bunny: occlusion 0.45 against 0.36 (large.json, 1 run: 0.52 against 0.45)
 // The traversal waits on memory: most of its time goes to the first loads of a node and a pack.
-// (Prefetching the far child bought nothing measurable.)
+// (Prefetching the far child bought nothing measurable; a leaf's pack, rarely cached, does.)
 
 // Four floats, handled by one SSE/NEON instruction per operation (GCC's and Clang's vector
 // extension: arithmetic and comparisons work lane by lane; a comparison gives 0 or -1 per lane).
 using Float4 = float __attribute__((vector_size(16)));
 using Int4 = int32_t __attribute__((vector_size(16)));
 
-Float4 load4(const float (&values)[4]) {
+Float4 load4(const float* values) {
 	Float4 v;
 	std::memcpy(&v, values, sizeof v);
 	return v;
 }
 
-// Slab test of a wide node's four children at once (handout §3.1, as slab_test above, lane by
-// lane): returns a bit per child hit within `bounds`, and where the ray enters each child's box.
+// A wide node's slot without a child: its box is empty, but a ray with a NaN direction overlaps
+// every box (see narrow()), so traversal checks this mark too.
+constexpr uint32_t UNUSED_SLOT = ~0u;
+
+// Slab test of a wide node's children, four at once (handout §3.1, as slab_test above, lane by
+// lane): returns a bit per child hit within `bounds` (never an unused slot), and where the ray
+// enters each child's box.
 template<typename Wide_Node>
 [[gnu::always_inline]] inline unsigned hit_children(const Wide_Node& node, const Slab_Ray& ray, Vec2 bounds,
-                                                    Float4& t_enter) {
-	Float4 enter = Float4{} + bounds.x, exit = Float4{} + bounds.y;
-	const float(*lo[3])[4] = {&node.min_x, &node.min_y, &node.min_z};
-	const float(*hi[3])[4] = {&node.max_x, &node.max_y, &node.max_z};
-	for (int axis = 0; axis < 3; axis++) {
-		bool negative = ray.negative[axis];
-		Float4 t_near = (load4(negative ? *hi[axis] : *lo[axis]) - ray.point[axis]) * ray.inv_dir[axis];
-		Float4 t_far = (load4(negative ? *lo[axis] : *hi[axis]) - ray.point[axis]) * ray.inv_dir[axis];
-		// As in narrow(): a NaN (0 * inf, a ray inside a slab's plane) fails the comparison and
-		// leaves the interval unchanged.
-		enter = t_near > enter ? t_near : enter;
-		exit = t_far < exit ? t_far : exit;
+                                                    float (&t_enter)[Wide_Node::WIDTH]) {
+	const float* lo[3] = {node.min_x, node.min_y, node.min_z};
+	const float* hi[3] = {node.max_x, node.max_y, node.max_z};
+	unsigned mask = 0;
+	for (int group = 0; group < Wide_Node::WIDTH; group += 4) { // four children at a time
+		Float4 enter = Float4{} + bounds.x, exit = Float4{} + bounds.y;
+		for (int axis = 0; axis < 3; axis++) {
+			bool negative = ray.negative[axis];
+			Float4 t_near = (load4((negative ? hi[axis] : lo[axis]) + group) - ray.point[axis]) * ray.inv_dir[axis];
+			Float4 t_far = (load4((negative ? lo[axis] : hi[axis]) + group) - ray.point[axis]) * ray.inv_dir[axis];
+			// As in narrow(): a NaN (0 * inf, a ray inside a slab's plane) fails the comparison and
+			// leaves the interval unchanged.
+			enter = t_near > enter ? t_near : enter;
+			exit = t_far < exit ? t_far : exit;
+		}
+		std::memcpy(t_enter + group, &enter, sizeof enter);
+		Int4 first;
+		std::memcpy(&first, node.first + group, sizeof first);
+		Int4 hit = (enter <= exit) & (first != Int4{} + int32_t(UNUSED_SLOT));
+		mask |= ((hit[0] & 1) | (hit[1] & 2) | (hit[2] & 4) | (hit[3] & 8)) << group;
 	}
-	t_enter = enter;
-	Int4 hit = enter <= exit;
-	return (hit[0] & 1) | (hit[1] & 2) | (hit[2] & 4) | (hit[3] & 8);
+	return mask;
 }
 
 // Appends the packs of triangles[start, start + size) to `packs`; returns the index of the first.
@@ -194,14 +218,10 @@ uint32_t pack_triangles(const std::vector<Triangle>& triangles, size_t start, si
 	return first;
 }
 
-// A wide node's slot without a child: its box is empty, but a ray with a NaN direction overlaps
-// every box (see narrow()), so traversal checks this mark too.
-constexpr uint32_t UNUSED_SLOT = ~0u;
-
-// Folds the binary tree into nodes of up to four children, from the root down: a wide node takes
-// its binary node's two children, then opens the interior child of largest surface area (the one a
-// ray most likely enters) into its two children, until it has four or only leaves. A leaf of the
-// binary tree stays a leaf, a child slot with count > 0.
+// Folds the binary tree into nodes of up to Wide_Node::WIDTH (eight) children, from the root down: a
+// wide node takes its binary node's two children, then opens the interior child of largest surface
+// area (the one a ray most likely enters) into its two children, until it has eight or only leaves.
+// A leaf of the binary tree stays a leaf, a child slot with count > 0.
 template<typename Node, typename Wide_Node, typename Leaf_First>
 std::vector<Wide_Node> widen(const std::vector<Node>& nodes, size_t root_idx, Leaf_First leaf_first) {
 	std::vector<Wide_Node> wide(1);
@@ -212,7 +232,7 @@ std::vector<Wide_Node> widen(const std::vector<Node>& nodes, size_t root_idx, Le
 		todo.pop_back();
 		std::vector<size_t> children{binary}; // the root as a single child when it is a leaf
 		if (!nodes[binary].is_leaf()) children = {nodes[binary].l, nodes[binary].r};
-		while (children.size() < 4) {
+		while (children.size() < size_t(Wide_Node::WIDTH)) {
 			auto largest = children.end();
 			for (auto c = children.begin(); c != children.end(); c++) {
 				if (!nodes[*c].is_leaf() &&
@@ -225,7 +245,7 @@ std::vector<Wide_Node> widen(const std::vector<Node>& nodes, size_t root_idx, Le
 			children.push_back(nodes[opened].r);
 		}
 		Wide_Node node;
-		for (int slot = 0; slot < 4; slot++) { // unused slots: an empty box and UNUSED_SLOT
+		for (int slot = 0; slot < Wide_Node::WIDTH; slot++) { // unused slots: an empty box and UNUSED_SLOT
 			BBox box = slot < int(children.size()) ? nodes[children[slot]].bbox : BBox{};
 			node.min_x[slot] = box.min.x, node.min_y[slot] = box.min.y, node.min_z[slot] = box.min.z;
 			node.max_x[slot] = box.max.x, node.max_y[slot] = box.max.y, node.max_z[slot] = box.max.z;
@@ -338,10 +358,18 @@ template<typename Triangle_Pack>
 	return (hit[0] & 1) | (hit[1] & 2) | (hit[2] & 4) | (hit[3] & 8);
 }
 
-// Front to back (handout §3.3) over wide_nodes: test a node's four children at once, go down into
+// Starts loading a leaf's first pack (its cache lines) before it is tested: a leaf's pack is
+// rarely in cache, and the packs of the leaves a node's test finds are then fetched at once.
+template<typename Triangle_Pack> [[gnu::always_inline]] inline void prefetch_pack(const Triangle_Pack& pack) {
+	const char* bytes = reinterpret_cast<const char*>(&pack);
+	for (size_t offset = 0; offset < sizeof pack; offset += 64) __builtin_prefetch(bytes + offset);
+}
+
+// Front to back (handout §3.3) over wide_nodes: test a node's children four at a time, go down into
 // the nearest child hit and keep the others on a stack, with the t at which the ray enters them.
 // The closest-hit query (hit()) shrinks the ray to each hit it finds; the any-hit query
-// (occluded()) returns at the first.
+// (occluded()) returns at the first, and takes the children hit in slot order: any hit will do,
+// so sorting them buys nothing (the answer, hit or not, is the same in any order).
 template<bool ANY_HIT, typename Primitive> Trace traverse(const BVH<Primitive>& bvh, const Ray& ray) {
 	struct Child { // a wide node (count 0) or a leaf's primitives
 		uint32_t first, count;
@@ -381,20 +409,47 @@ template<bool ANY_HIT, typename Primitive> Trace traverse(const BVH<Primitive>& 
 			}
 		} else {
 			const auto& node = bvh.wide_nodes[child.first];
-			Float4 t_enter;
+			constexpr int WIDTH = BVH<Primitive>::Wide_Node::WIDTH;
+			float t_enter[WIDTH];
 			unsigned mask = hit_children(node, slab_ray, r.dist_bounds, t_enter);
-			// The children hit, nearest first (insertion sort of at most four).
-			Child hits[4];
-			int count = 0;
-			for (int slot = 0; slot < 4; slot++) {
-				if (!(mask & (1u << slot)) || node.first[slot] == UNUSED_SLOT) continue;
-				Child c{node.first[slot], node.count[slot], t_enter[slot]};
-				int at = count++;
-				for (; at > 0 && hits[at - 1].t_enter > c.t_enter; at--) hits[at] = hits[at - 1];
-				hits[at] = c;
-			}
-			if (count > 0) {
-				if (top + 3 > stack.size()) stack.resize(2 * stack.size());
+			if (mask != 0) {
+				if (top + WIDTH > stack.size()) stack.resize(2 * stack.size());
+				auto hit = [&](int slot) { return Child{node.first[slot], node.count[slot], t_enter[slot]}; };
+				if constexpr (std::is_same_v<Primitive, Triangle>) { // the leaves' packs, fetched at once
+					for (unsigned leaves = mask; leaves != 0; leaves &= leaves - 1) {
+						int slot = __builtin_ctz(leaves);
+						if (node.count[slot] > 0) prefetch_pack(bvh.triangle_packs[node.first[slot]]);
+					}
+				}
+				int near = __builtin_ctz(mask);
+				mask &= mask - 1;
+				if (mask == 0) { // one child hit (the common case): nothing to order
+					child = hit(near);
+					continue;
+				}
+				if (ANY_HIT) { // any hit ends the query: no order needed
+					for (; mask != 0; mask &= mask - 1) stack[top++] = hit(__builtin_ctz(mask));
+					child = hit(near);
+					continue;
+				}
+				int far = __builtin_ctz(mask);
+				mask &= mask - 1;
+				if (mask == 0) { // two: the nearer first, the lower slot on a tie (as the sort below)
+					if (t_enter[far] < t_enter[near]) std::swap(near, far);
+					stack[top++] = hit(far);
+					child = hit(near);
+					continue;
+				}
+				// More: insertion sort, nearest first.
+				Child hits[WIDTH] = {hit(near), hit(far)};
+				if (hits[1].t_enter < hits[0].t_enter) std::swap(hits[0], hits[1]);
+				int count = 2;
+				for (; mask != 0; mask &= mask - 1) {
+					Child c = hit(__builtin_ctz(mask));
+					int at = count++;
+					for (; at > 0 && hits[at - 1].t_enter > c.t_enter; at--) hits[at] = hits[at - 1];
+					hits[at] = c;
+				}
 				for (int i = count - 1; i > 0; i--) stack[top++] = hits[i]; // the nearest is popped first
 				child = hits[0];
 				continue;
