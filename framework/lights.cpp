@@ -123,9 +123,12 @@ float Area_Lights::pdf(size_t i, Vec3 from, Vec3 dir) const {
 		return pdf;
 	}
 	// Every point of the light on the ray adds its density, but a point on an edge is claimed by
-	// both triangles that share it (EDGE_SLACK): hits at the same distance along the ray (to the
-	// slack) are the same point and count once.
-	std::vector<double> counted;
+	// both triangles that share it (EDGE_SLACK): hits at the same distance along the ray, to within
+	// ten times the slack (neighbours that are not coplanar meet the ray a little apart in the
+	// slack band), are the same point and count once. The list of distances is kept per thread and
+	// reused: this runs for every light-sampled and BSDF-sampled direction.
+	thread_local std::vector<double> counted;
+	counted.clear();
 	for (const Light_Triangle& tri : light.triangles) {
 		double s = triangle_distance(tri, from, dir);
 		if (s <= 0.0) continue;

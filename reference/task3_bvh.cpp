@@ -427,7 +427,7 @@ template<bool ANY_HIT, typename Primitive> Trace traverse(const BVH<Primitive>& 
 					child = hit(near);
 					continue;
 				}
-				if (ANY_HIT) { // any hit ends the query: no order needed
+				if constexpr (ANY_HIT) { // any hit ends the query: no order needed
 					for (; mask != 0; mask &= mask - 1) stack[top++] = hit(__builtin_ctz(mask));
 					child = hit(near);
 					continue;
