@@ -43,6 +43,11 @@ public:
 	// running throughput, then forgets them.
 	void print(std::ostream& out, const std::vector<std::string>& material_names);
 
+	// The camera rays recorded so far, each with the rays spawned from it (tests inspect them).
+	const std::vector<std::unique_ptr<Lifecycle_Ray>>& rays() const {
+		return roots;
+	}
+
 private:
 	std::vector<std::unique_ptr<Lifecycle_Ray>> roots;
 	Lifecycle_Ray* current = nullptr;

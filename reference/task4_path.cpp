@@ -44,24 +44,25 @@ namespace {
 // of the hit point, because the rounding error of a float coordinate does (the scheme of Mitsuba 3's
 // RayEpsilon): (1 + max |p_i|) * 64 * 2^-24, about 4e-6 near the origin and 0.04 at 10^4. The
 // stress suite finds self-intersections with 2 * 2^-24 (1497 of 40000 rays) and none with 8; 64
-// keeps a margin. As small as that, because the light pdf is measured from the hit point, the ray
-// from the lifted origin: Mitsuba's 1500 made the two disagree in a band 0.05 wide around the light
-// of the 550-unit Cornell box, where BSDF samples became fireflies (bench/README.md).
+// keeps a margin.
 float ray_offset(Vec3 p) {
 	constexpr float RAY_EPSILON = 64.0f * 0x1p-24f;
 	float magnitude = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
 	return (1.0f + magnitude) * RAY_EPSILON;
 }
 
-// The new ray from a hit (handout §4.2): it starts ray_offset above the surface, along the normal
-// on the side `dir` leaves to, and may hit anything from there on. Pushing the origin off along
-// the normal, rather than only raising t_min, also protects grazing directions: a ray at angle a
-// to the surface is ray_offset / sin(a) along before it is ray_offset above, which for light
-// samples towards the far end of a wall is more than any t_min (the stress suite counts these).
-Ray spawn_ray(const Trace& hit, Vec3 dir, uint32_t depth) {
+// The hit point moved ray_offset off the surface, along the normal on the side `dir` points to.
+// Pushing the origin off, rather than only raising t_min, also protects grazing directions: a ray
+// at angle a to the surface is ray_offset / sin(a) along before it is ray_offset above, which for
+// light samples towards the far end of a wall is more than any t_min (the stress suite counts these).
+Vec3 lifted(const Trace& hit, Vec3 dir) {
 	Vec3 side = glm::dot(dir, hit.normal) >= 0.0f ? hit.normal : -hit.normal;
-	Vec3 origin = hit.position + ray_offset(hit.position) * side;
-	return Ray(origin, dir, Vec2{0.0f, INF_F}, depth);
+	return hit.position + ray_offset(hit.position) * side;
+}
+
+// The new ray from a hit (handout §4.2): it starts at the lifted point and may hit anything from there on.
+Ray spawn_ray(const Trace& hit, Vec3 dir, uint32_t depth) {
+	return Ray(lifted(hit, dir), dir, Vec2{0.0f, INF_F}, depth);
 }
 
 // Russian roulette starts once a path has bounced this often: the first bounces carry most of the
@@ -91,7 +92,14 @@ Spectrum Pathtracer::shade(RNG& rng, const Ray& ray, const Trace& hit) const {
 	if (ray.depth >= settings.max_depth) return radiance; // no bounce left: emission only
 	if (material.bsdf.is_black()) return radiance;         // nothing to sample (e.g. an area light)
 
-	Incoming_Sample s = sample_incoming(rng, hit, material.bsdf, out_dir);
+	// Directions are drawn, and their density measured, at the point the next ray starts from: the
+	// hit lifted to the side the path arrived on, which is where every direction a two-sided
+	// Lambertian surface reflects into starts (spawn_ray). Drawn at the hit point itself, a light
+	// sample and the ray traced for it would disagree near the light's edges: a ray could hit the
+	// light where its light pdf said it misses it, and weigh 2 * albedo * L_e (bench/README.md).
+	Trace from = hit;
+	from.position = lifted(hit, out_dir);
+	Incoming_Sample s = sample_incoming(rng, from, material.bsdf, out_dir);
 	Spectrum weight = sample_weight(s, hit.normal);
 	// A black weight ends the path. (NaN is not caught here on purpose: the film counts it.)
 	if (weight == Spectrum{0.0f}) return radiance;
