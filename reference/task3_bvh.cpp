@@ -148,8 +148,19 @@ Split best_split(const Build_Item* begin, const Build_Item* end, const BBox& cen
 //   0.60 / 0.61 / 0.49 against 0.54 / 0.55 / 0.49)
 // - occluded(): the children hit taken in slot order, not nearest first; alternating runs with the
 //   step above, 4 on the bunny: occlusion 0.45 against 0.36 (large.json, 1 run: 0.52 against 0.45)
+// - packs that answer the hit: the pack test is Triangle::hit's arithmetic, lane by lane, so it
+//   keeps the closest (t, triangle) itself and Triangle::hit runs once, on the winner, for the
+//   record (its Triangle prefetched when it is found); alternating the two in one binary, 4 runs
+//   on the bunny: 0.71 / 0.47 against 0.68 / 0.44 (primary / incoherent; large.json, 2 runs:
+//   0.55 / 0.60 against 0.52 / 0.61)
+// - occluded(): the pack's verdict ends the query without loading the Triangle (where it is
+//   Triangle::hit's bit for bit: PACK_IS_EXACT); alternating runs, 3 on the bunny: occlusion 0.67
+//   against 0.42 (large.json, 2 runs: 0.70 against 0.55)
 // The traversal waits on memory: most of its time goes to the first loads of a node and a pack.
 // (Prefetching the far child bought nothing measurable; a leaf's pack, rarely cached, does.)
+// Tried and dropped: leaves of up to eight triangles (two packs) in the wide tree, binary subtrees
+// of five to eight folded into one leaf: bunny 0.68 / 0.50 / 0.50 against 0.74 / 0.45 / 0.44 (4
+// runs), large.json 0.58 / 0.56 / 0.54 against 0.57 / 0.57 / 0.59 (3 runs).
 
 // Four floats, handled by one SSE/NEON instruction per operation (GCC's and Clang's vector
 // extension: arithmetic and comparisons work lane by lane; a comparison gives 0 or -1 per lane).
@@ -331,13 +342,31 @@ template<typename Primitive> void BVH<Primitive>::build(std::vector<Primitive>&&
 
 namespace {
 
-// Möller–Trumbore (handout §2.1, as reference/task2_shapes.cpp computes it) on the four triangles
-// of a pack at once, as a filter: a bit per triangle that may be hit. It errs on the side of a
-// hit (a wider edge slack, a wider t range), and each candidate is then tested by Triangle::hit
-// itself, so the packs change the speed, never the answer.
+// Möller–Trumbore (handout §2.1) on the four triangles of a pack at once, with Triangle::hit's
+// arithmetic (reference/task2_shapes.cpp: the same products and sums in the same order, one
+// reciprocal of det), so that its t, u and v are those of Triangle::hit bit for bit, and so is
+// its verdict `hit`. IEEE float rounds each operation alone, in a vector lane as in a scalar, as
+// long as the compiler neither fuses a multiply and an add into one rounding (it may where the
+// target has FMA, __FP_FAST_FMAF: the stress suite's FMA build, ARM64) nor reorders sums
+// (-ffast-math). Then the two may round differently: `maybe` is a wider test that errs on the side
+// of a hit (ten times the edge slack, t bounds widened by 1e-4 t), and its lanes outside `hit` are
+// left to Triangle::hit.
+#if defined(__FP_FAST_FMAF) || defined(__FAST_MATH__)
+constexpr bool PACK_IS_EXACT = false;
+#else
+constexpr bool PACK_IS_EXACT = true;
+#endif
+
+struct Pack_Hits {
+	unsigned hit;   // a bit per triangle hit with t in ray.dist_bounds
+	unsigned maybe; // a bit per triangle that may be hit (contains `hit`)
+	Float4 t;       // the ray parameter of each triangle's plane
+};
+
 template<typename Triangle_Pack>
-[[gnu::always_inline]] inline unsigned may_hit(const Triangle_Pack& pack, const Ray& ray) {
-	constexpr float SLACK = 1e-4f; // ten times Triangle::hit's
+[[gnu::always_inline]] inline Pack_Hits hit_pack(const Triangle_Pack& pack, const Ray& ray) {
+	constexpr float EDGE_SLACK = 1e-5f; // Triangle::hit's
+	constexpr float WIDE_SLACK = 1e-4f;
 	Float4 e1[3], e2[3], s[3];
 	for (int axis = 0; axis < 3; axis++) {
 		e1[axis] = load4(pack.e1[axis]), e2[axis] = load4(pack.e2[axis]);
@@ -347,22 +376,37 @@ template<typename Triangle_Pack>
 		out[0] = a[1] * b[2] - a[2] * b[1], out[1] = a[2] * b[0] - a[0] * b[2], out[2] = a[0] * b[1] - a[1] * b[0];
 	};
 	auto dot_dir = [&](const Float4* a) { return ray.dir.x * a[0] + ray.dir.y * a[1] + ray.dir.z * a[2]; };
+	// det = -d . n, u det = d . (e2 x s), v det = d . (s x e1), t det = s . n, n = e1 x e2.
 	Float4 n[3], e2_s[3], s_e1[3];
 	cross(e1, e2, n), cross(e2, s, e2_s), cross(s, e1, s_e1);
 	Float4 det = -dot_dir(n);
-	Float4 u = dot_dir(e2_s) / det, v = dot_dir(s_e1) / det;
-	Float4 t = (s[0] * n[0] + s[1] * n[1] + s[2] * n[2]) / det;
-	Float4 t_margin = SLACK * (t < 0 ? -t : t);
-	Int4 hit = (det != 0) & (u >= -SLACK) & (v >= -SLACK) & (u + v <= 1 + SLACK) &
-	           (t >= ray.dist_bounds.x - t_margin) & (t <= ray.dist_bounds.y + t_margin);
-	return (hit[0] & 1) | (hit[1] & 2) | (hit[2] & 4) | (hit[3] & 8);
+	Float4 inv_det = 1.0f / det;
+	Float4 u = dot_dir(e2_s) * inv_det, v = dot_dir(s_e1) * inv_det;
+	Float4 t = (s[0] * n[0] + s[1] * n[1] + s[2] * n[2]) * inv_det;
+	// Triangle::hit: det != 0, the edge slack, t in bounds (written positively: NaN fails).
+	Int4 hit = (det != 0) & (u >= -EDGE_SLACK) & (v >= -EDGE_SLACK) & (u + v <= 1.0f + EDGE_SLACK) &
+	           (t >= ray.dist_bounds.x) & (t <= ray.dist_bounds.y) & (t < INF_F);
+	Float4 t_margin = WIDE_SLACK * (t < 0 ? -t : t);
+	Int4 maybe = (det != 0) & (u >= -WIDE_SLACK) & (v >= -WIDE_SLACK) & (u + v <= 1 + WIDE_SLACK) &
+	             (t >= ray.dist_bounds.x - t_margin) & (t <= ray.dist_bounds.y + t_margin);
+	auto bits = [](Int4 lanes) { return unsigned((lanes[0] & 1) | (lanes[1] & 2) | (lanes[2] & 4) | (lanes[3] & 8)); };
+	return Pack_Hits{bits(hit), bits(maybe | hit), t};
 }
 
-// Starts loading a leaf's first pack (its cache lines) before it is tested: a leaf's pack is
-// rarely in cache, and the packs of the leaves a node's test finds are then fetched at once.
-template<typename Triangle_Pack> [[gnu::always_inline]] inline void prefetch_pack(const Triangle_Pack& pack) {
-	const char* bytes = reinterpret_cast<const char*>(&pack);
-	for (size_t offset = 0; offset < sizeof pack; offset += 64) __builtin_prefetch(bytes + offset);
+// What the any-hit query returns when a pack finds a hit: occluded() reads only `hit`.
+inline Trace occluder(float t) {
+	Trace trace;
+	trace.hit = true;
+	trace.distance = t;
+	return trace;
+}
+
+// Starts loading an object's cache lines before it is used: a leaf's pack (rarely in cache; the
+// packs of the leaves a node's test finds are then fetched at once), the closest triangle.
+template<typename T> [[gnu::always_inline]] inline void prefetch(const T& object) {
+	const char* bytes = reinterpret_cast<const char*>(&object);
+	for (size_t offset = 0; offset < sizeof object; offset += 64) __builtin_prefetch(bytes + offset);
+	__builtin_prefetch(bytes + sizeof object - 1); // the last line, when the object straddles one more
 }
 
 // Front to back (handout §3.3) over wide_nodes: test a node's children four at a time, go down into
@@ -370,7 +414,12 @@ template<typename Triangle_Pack> [[gnu::always_inline]] inline void prefetch_pac
 // The closest-hit query (hit()) shrinks the ray to each hit it finds; the any-hit query
 // (occluded()) returns at the first, and takes the children hit in slot order: any hit will do,
 // so sorting them buys nothing (the answer, hit or not, is the same in any order).
-template<bool ANY_HIT, typename Primitive> Trace traverse(const BVH<Primitive>& bvh, const Ray& ray) {
+// Triangles: a pack's test decides its four triangles (hit_pack) and the closest-hit query keeps
+// the closest one's index; Triangle::hit then gives the record, on the whole ray, so the result is
+// the lab's test bit for bit. If that misses (only where the pack rounded otherwise: fused
+// multiply-add), the query starts over with `exact`: every candidate tested by Triangle::hit.
+template<bool ANY_HIT, typename Primitive>
+Trace traverse(const BVH<Primitive>& bvh, const Ray& ray, bool exact = false) {
 	struct Child { // a wide node (count 0) or a leaf's primitives
 		uint32_t first, count;
 		float t_enter;
@@ -383,28 +432,46 @@ template<bool ANY_HIT, typename Primitive> Trace traverse(const BVH<Primitive>& 
 	Ray r = ray; // r.dist_bounds.y shrinks to the closest hit found so far
 	Slab_Ray slab_ray(ray);
 	Trace closest;
+	constexpr uint32_t NONE = ~0u;
+	uint32_t best = NONE; // triangles (closest hit): the closest triangle found, hit at r.dist_bounds.y
 	if (bvh.wide_nodes.empty()) return closest;
 	Child child{0, 0, ray.dist_bounds.x}; // the root
 
 	while (true) {
 		if (child.count > 0) {
-			// Test one primitive with the lab's own test (for triangles: a candidate of a pack).
-			auto test = [&](uint32_t i) {
-				closest = Trace::min(closest, bvh.primitives[i].hit(r));
-				if (closest.hit) r.dist_bounds.y = closest.distance;
-			};
 			if constexpr (std::is_same_v<Primitive, Triangle>) {
 				for (uint32_t p = child.first; p < child.first + (child.count + 3) / 4; p++) {
 					const auto& pack = bvh.triangle_packs[p];
-					for (unsigned lanes = may_hit(pack, r); lanes != 0; lanes &= lanes - 1) {
-						test(pack.index[__builtin_ctz(lanes)]);
-						if (ANY_HIT && closest.hit) return closest;
+					Pack_Hits hits = hit_pack(pack, r);
+					if (exact) hits.hit = 0; // the fallback below: every candidate to Triangle::hit
+					// Candidates the pack cannot decide (rounding with fused multiply-add): the lab's test.
+					for (unsigned lanes = hits.maybe & ~hits.hit; lanes != 0; lanes &= lanes - 1) {
+						uint32_t i = pack.index[__builtin_ctz(lanes)];
+						Trace trace = bvh.primitives[i].hit(r);
+						if (!trace.hit) continue;
+						if (ANY_HIT) return trace;
+						best = i, r.dist_bounds.y = trace.distance;
+					}
+					for (unsigned lanes = hits.hit; lanes != 0; lanes &= lanes - 1) {
+						int lane = __builtin_ctz(lanes);
+						if constexpr (ANY_HIT) {
+							// The pack's verdict is Triangle::hit's: done, without loading the Triangle.
+							// Otherwise the lab's test confirms it (one Triangle load per ray).
+							if (PACK_IS_EXACT) return occluder(hits.t[lane]);
+							Trace trace = bvh.primitives[pack.index[lane]].hit(r);
+							if (trace.hit) return trace;
+						} else if (hits.t[lane] <= r.dist_bounds.y) { // (an earlier lane may have come closer)
+							best = pack.index[lane], r.dist_bounds.y = hits.t[lane];
+							prefetch(bvh.primitives[best]); // for the final Triangle::hit below
+						}
 					}
 				}
 			} else {
 				for (uint32_t i = child.first; i < child.first + child.count; i++) {
-					test(i);
-					if (ANY_HIT && closest.hit) return closest;
+					closest = Trace::min(closest, bvh.primitives[i].hit(r));
+					if (!closest.hit) continue;
+					if (ANY_HIT) return closest;
+					r.dist_bounds.y = closest.distance;
 				}
 			}
 		} else {
@@ -418,7 +485,7 @@ template<bool ANY_HIT, typename Primitive> Trace traverse(const BVH<Primitive>& 
 				if constexpr (std::is_same_v<Primitive, Triangle>) { // the leaves' packs, fetched at once
 					for (unsigned leaves = mask; leaves != 0; leaves &= leaves - 1) {
 						int slot = __builtin_ctz(leaves);
-						if (node.count[slot] > 0) prefetch_pack(bvh.triangle_packs[node.first[slot]]);
+						if (node.count[slot] > 0) prefetch(bvh.triangle_packs[node.first[slot]]);
 					}
 				}
 				int near = __builtin_ctz(mask);
@@ -459,6 +526,15 @@ template<bool ANY_HIT, typename Primitive> Trace traverse(const BVH<Primitive>& 
 		while (top > 0 && stack[top - 1].t_enter > r.dist_bounds.y) top--;
 		if (top == 0) break;
 		child = stack[--top];
+	}
+	if constexpr (std::is_same_v<Primitive, Triangle>) {
+		// The closest triangle's record (its normal, position) from the lab's test on the whole ray.
+		if (ANY_HIT || best == NONE) return closest;
+		Trace trace = bvh.primitives[best].hit(ray);
+		// A miss only where the pack's arithmetic rounded otherwise (fused multiply-add): start over
+		// with every candidate tested by Triangle::hit (whose winner hits again).
+		if (trace.hit || exact) return trace;
+		return traverse<ANY_HIT>(bvh, ray, true);
 	}
 	return closest;
 }
