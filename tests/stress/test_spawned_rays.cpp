@@ -57,8 +57,13 @@ Scene floor_in_emitting_box(const Material& floor, const Placement& place, bool 
 
 // Camera-like rays from above the middle of the box to points of the floor at least 2 from the
 // walls (so that a spawned ray's first hit is at least 2 away, beyond any sane offset).
-Stress_Count count_self_intersections(const Material& floor, bool environment, int rays_per_offset, uint64_t seed) {
-	Stress_Count count;
+struct Spawned_Rays {
+	Stress_Count self_intersections; // inputs: camera rays; failures: a spawned ray hit the floor
+	size_t spawned = 0;              // camera rays from whose hit a ray was spawned
+};
+
+Spawned_Rays count_self_intersections(const Material& floor, bool environment, int rays_per_offset, uint64_t seed) {
+	Spawned_Rays count;
 	RNG rng(seed);
 	for (float offset : {1.0f, 1e2f, 1e3f, 1e4f}) {
 		Placement place{offset * OFFSET_DIRECTION};
@@ -72,11 +77,13 @@ Stress_Count count_self_intersections(const Material& floor, bool environment, i
 			Ray ray(eye, glm::normalize(target - eye));
 			Lifecycle_Recorder recorder;
 			pathtracer.trace(rng, ray);
+			const auto& spawned_rays = recorder.rays().at(0)->children;
 			bool hit_floor_again = false;
-			for (const auto& spawned : recorder.rays().at(0)->children) {
+			for (const auto& spawned : spawned_rays) {
 				hit_floor_again |= spawned->hit.hit && spawned->hit.object == FLOOR_OBJECT;
 			}
-			count.add(hit_floor_again, [&] {
+			count.spawned += !spawned_rays.empty();
+			count.self_intersections.add(hit_floor_again, [&] {
 				return "offset " + std::to_string(offset) + ", camera ray " + shape_oracle::show(ray);
 			});
 		}
@@ -84,14 +91,23 @@ Stress_Count count_self_intersections(const Material& floor, bool environment, i
 	return count;
 }
 
-void require_none(const Stress_Count& count, const char* what) {
+void require_none(const Spawned_Rays& rays, const char* what) {
+	const Stress_Count& count = rays.self_intersections;
+	{
+		// Only a spawned ray can hit the floor again: the test needs the path tracer to spawn them. (A
+		// light sample below the horizon of a point lifted off the floor weighs 0 and spawns none.)
+		INFO("Pathtracer::shade spawned a ray from only " << rays.spawned << " of " << count.inputs
+		                                                  << " hits on " << what << " with max_depth = 1 (handout §4.2)");
+		CHECK(rays.spawned > count.inputs / 2);
+	}
 	INFO("Pathtracer::shade: " << count.report(std::string("rays spawned by ") + what +
 	                                          " from a floor at offsets 1 ... 10^4 hit the floor again")
 	                           << ".\nThe new ray must start beyond the rounding error of the hit point, which "
 	                              "grows with its coordinates: use dist_bounds.x = (1 + max |p_i|) * 1500 * 2^-24, "
 	                              "not a fixed 1e-4 (handout §4.3).");
 	CHECK(count.failures == 0);
-	std::printf("stress count: self-intersections of %s: %zu of %zu\n", what, count.failures, count.inputs);
+	std::printf("stress count: self-intersections of %s: %zu of %zu (rays spawned: %zu)\n", what, count.failures,
+	            count.inputs, rays.spawned);
 }
 
 } // namespace
