@@ -56,7 +56,7 @@ public:
 	// not use it). The reference build() fills it from `nodes`, and its hit() traverses it instead:
 	// the same tree with two of every three levels folded in, so that a node has up to eight
 	// children whose boxes two 4-wide slab tests handle (bench/README.md).
-	struct alignas(64) Wide_Node { // 256 bytes: four cache lines
+	struct alignas(64) Wide_Node { // 288 bytes, padded to 320: five cache lines
 		static constexpr int WIDTH = 8; // children per node
 		// The children's boxes, one array per bound and axis, so that one 4-wide instruction
 		// handles the same bound of four children. An unused slot holds an empty box.
@@ -65,6 +65,8 @@ public:
 		                       // or in BVH<Triangle> its first triangle pack
 		uint32_t count[WIDTH]; // leaf: its number of primitives (>= 1); interior child or unused: 0
 		                       // (an unused slot has first = ~0u and an empty box)
+		uint32_t start[WIDTH]; // leaf: its first primitive (as Node::start); otherwise 0. In the last
+		                       // line, read only by closest-hit queries, to fetch a leaf's triangles.
 	};
 	std::vector<Wide_Node> wide_nodes; // wide_nodes[0] is the root; empty without primitives
 

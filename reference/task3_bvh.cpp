@@ -159,6 +159,12 @@ Split best_split(const Build_Item* begin, const Build_Item* end, const BBox& cen
 // - a vector comparison's lanes read as a bit mask by one instruction (movmskps) instead of four
 //   extracts; alternating runs, 3 on the bunny: 0.82 / 0.50 / 0.64 against 0.80 / 0.42 / 0.50
 //   (large.json, 1 run: 0.63 / 0.62 / 0.70 against 0.58 / 0.65 / 0.74, within its noise)
+// - for the closest hit, a leaf's triangles fetched along with its pack when a node's test finds
+//   it (the node keeps each leaf's first triangle, a fifth cache line), not when the winner is
+//   known: the final Triangle::hit's load had cost a quarter of a primary ray (large.json, a
+//   record-less variant: 0.85 against 0.60 to 0.71); alternating runs, 6 on large.json: 0.80 /
+//   0.59 / 0.65 against 0.75 / 0.62 / 0.65 (bunny, 3 runs: 0.98 / 0.56 / 0.60 against 1.01 /
+//   0.54 / 0.63, within its noise)
 // The traversal waits on memory: most of its time goes to the first loads of a node and a pack.
 // (Prefetching the far child bought nothing measurable; a leaf's pack, rarely cached, does.)
 // Tried and dropped: leaves of up to eight triangles (two packs) in the wide tree, binary subtrees
@@ -273,11 +279,12 @@ std::vector<Wide_Node> widen(const std::vector<Node>& nodes, size_t root_idx, Le
 			BBox box = slot < int(children.size()) ? nodes[children[slot]].bbox : BBox{};
 			node.min_x[slot] = box.min.x, node.min_y[slot] = box.min.y, node.min_z[slot] = box.min.z;
 			node.max_x[slot] = box.max.x, node.max_y[slot] = box.max.y, node.max_z[slot] = box.max.z;
-			node.first[slot] = UNUSED_SLOT, node.count[slot] = 0;
+			node.first[slot] = UNUSED_SLOT, node.count[slot] = 0, node.start[slot] = 0;
 			if (slot >= int(children.size())) continue;
 			const Node& child = nodes[children[slot]];
 			if (child.is_leaf()) {
 				node.first[slot] = leaf_first(child.start, child.size), node.count[slot] = uint32_t(child.size);
+				node.start[slot] = uint32_t(child.start);
 			} else {
 				node.first[slot] = uint32_t(wide.size());
 				wide.emplace_back();
@@ -413,12 +420,21 @@ inline Trace occluder(float t) {
 	return trace;
 }
 
-// Starts loading an object's cache lines before it is used: a leaf's pack (rarely in cache; the
-// packs of the leaves a node's test finds are then fetched at once), the closest triangle.
-template<typename T> [[gnu::always_inline]] inline void prefetch(const T& object) {
-	const char* bytes = reinterpret_cast<const char*>(&object);
-	for (size_t offset = 0; offset < sizeof object; offset += 64) __builtin_prefetch(bytes + offset);
-	__builtin_prefetch(bytes + sizeof object - 1); // the last line, when the object straddles one more
+// Starts loading the cache lines of `size` bytes at `start` before they are used.
+[[gnu::always_inline]] inline void prefetch(const void* start, size_t size) {
+	const char* bytes = static_cast<const char*>(start);
+	for (size_t offset = 0; offset < size; offset += 64) __builtin_prefetch(bytes + offset);
+	__builtin_prefetch(bytes + size - 1); // the last line, when the bytes straddle one more
+}
+
+// What traversal fetches ahead for a leaf that a node's test finds (the leaves found are then
+// fetched at once): its first pack, rarely in cache, and for the closest hit the pack's triangles,
+// one of which the final Triangle::hit reads: fetched with the pack, it arrives while the pack
+// is tested, not after.
+template<bool ANY_HIT, typename Wide_Node>
+[[gnu::always_inline]] inline void prefetch_leaf(const BVH<Triangle>& bvh, const Wide_Node& node, int slot) {
+	prefetch(&bvh.triangle_packs[node.first[slot]], sizeof(bvh.triangle_packs[0]));
+	if (!ANY_HIT) prefetch(&bvh.primitives[node.start[slot]], std::min<uint32_t>(node.count[slot], 4) * sizeof(Triangle));
 }
 
 // Front to back (handout §3.3) over wide_nodes: test a node's children four at a time, go down into
@@ -474,7 +490,6 @@ Trace traverse(const BVH<Primitive>& bvh, const Ray& ray, bool exact = false) {
 							if (trace.hit) return trace;
 						} else if (hits.t[lane] <= r.dist_bounds.y) { // (an earlier lane may have come closer)
 							best = pack.index[lane], r.dist_bounds.y = hits.t[lane];
-							prefetch(bvh.primitives[best]); // for the final Triangle::hit below
 						}
 					}
 				}
@@ -494,10 +509,10 @@ Trace traverse(const BVH<Primitive>& bvh, const Ray& ray, bool exact = false) {
 			if (mask != 0) {
 				if (top + WIDTH > stack.size()) stack.resize(2 * stack.size());
 				auto hit = [&](int slot) { return Child{node.first[slot], node.count[slot], t_enter[slot]}; };
-				if constexpr (std::is_same_v<Primitive, Triangle>) { // the leaves' packs, fetched at once
+				if constexpr (std::is_same_v<Primitive, Triangle>) { // the leaves found, fetched at once
 					for (unsigned leaves = mask; leaves != 0; leaves &= leaves - 1) {
 						int slot = __builtin_ctz(leaves);
-						if (node.count[slot] > 0) prefetch(bvh.triangle_packs[node.first[slot]]);
+						if (node.count[slot] > 0) prefetch_leaf<ANY_HIT>(bvh, node, slot);
 					}
 				}
 				int near = __builtin_ctz(mask);
