@@ -162,9 +162,9 @@ Split best_split(const Build_Item* begin, const Build_Item* end, const BBox& cen
 // - for the closest hit, a leaf's triangles fetched along with its pack when a node's test finds
 //   it (the node keeps each leaf's first triangle, a fifth cache line), not when the winner is
 //   known: the final Triangle::hit's load had cost a quarter of a primary ray (large.json, a
-//   record-less variant: 0.85 against 0.60 to 0.71); alternating runs, 6 on large.json: 0.80 /
-//   0.59 / 0.65 against 0.75 / 0.62 / 0.65 (bunny, 3 runs: 0.98 / 0.56 / 0.60 against 1.01 /
-//   0.54 / 0.63, within its noise)
+//   record-less variant: 0.76 to 1.02 against 0.60 to 0.71); alternating runs, 6 on large.json:
+//   0.80 / 0.59 / 0.65 against 0.75 / 0.62 / 0.65 (bunny, 3 runs: 0.98 / 0.56 / 0.60 against
+//   1.01 / 0.54 / 0.63, within its noise)
 // The traversal waits on memory: most of its time goes to the first loads of a node and a pack.
 // (Prefetching the far child bought nothing measurable; a leaf's pack, rarely cached, does.)
 // Tried and dropped: leaves of up to eight triangles (two packs) in the wide tree, binary subtrees
@@ -434,7 +434,10 @@ inline Trace occluder(float t) {
 template<bool ANY_HIT, typename Wide_Node>
 [[gnu::always_inline]] inline void prefetch_leaf(const BVH<Triangle>& bvh, const Wide_Node& node, int slot) {
 	prefetch(&bvh.triangle_packs[node.first[slot]], sizeof(bvh.triangle_packs[0]));
-	if (!ANY_HIT) prefetch(&bvh.primitives[node.start[slot]], std::min<uint32_t>(node.count[slot], 4) * sizeof(Triangle));
+	if (!ANY_HIT) {
+		uint32_t triangles = std::min<uint32_t>(node.count[slot], 4); // the first pack's
+		prefetch(&bvh.primitives[node.start[slot]], triangles * sizeof(Triangle));
+	}
 }
 
 // Front to back (handout §3.3) over wide_nodes: test a node's children four at a time, go down into
