@@ -1,4 +1,4 @@
-// Stress (handout §4.3): rays spawned at a hit point (reflection, refraction, and light-sampled
+// Stress (handout §4.5): rays spawned at a hit point (reflection, refraction, and light-sampled
 // "shadow" directions) never hit the surface they leave, however far the scene is from the origin.
 //
 // The scene: a floor (the material under test) closing the bottom of a tilted box of size 10 whose five
@@ -104,7 +104,7 @@ void require_none(const Spawned_Rays& rays, const char* what) {
 	                                          " from a floor at offsets 1 ... 10^4 hit the floor again")
 	                           << ".\nThe new ray must start beyond the rounding error of the hit point, which "
 	                              "grows with its coordinates: use dist_bounds.x = (1 + max |p_i|) * 1500 * 2^-24, "
-	                              "not a fixed 1e-4 (handout §4.3).");
+	                              "not a fixed 1e-4 (handout §4.2).");
 	CHECK(count.failures == 0);
 	std::printf("stress count: self-intersections of %s: %zu of %zu (rays spawned: %zu)\n", what, count.failures,
 	            count.inputs, rays.spawned);
