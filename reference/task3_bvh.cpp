@@ -255,7 +255,6 @@ uint32_t pack_triangles(const std::vector<Triangle>& triangles, size_t start, si
 template<typename Node, typename Wide_Node, typename Leaf_First>
 std::vector<Wide_Node> widen(const std::vector<Node>& nodes, size_t root_idx, Leaf_First leaf_first) {
 	std::vector<Wide_Node> wide(1);
-	wide.reserve(nodes.size() / 2 + 1);
 	std::vector<std::pair<size_t, size_t>> todo{{root_idx, 0}}; // binary node -> its wide node
 	while (!todo.empty()) {
 		auto [binary, index] = todo.back();
@@ -358,6 +357,10 @@ template<typename Primitive> void BVH<Primitive>::build(std::vector<Primitive>&&
 	} else {
 		wide_nodes = widen<Node, Wide_Node>(nodes, root_idx, [](size_t start, size_t) { return uint32_t(start); });
 	}
+	// The vectors grew by doubling: give back the room they do not use.
+	nodes.shrink_to_fit();
+	wide_nodes.shrink_to_fit();
+	triangle_packs.shrink_to_fit();
 }
 
 namespace {
