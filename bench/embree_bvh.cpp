@@ -75,6 +75,25 @@ float Embree_BVH::closest_hit(const Ray& ray) const {
 	return ray_hit.hit.geomID == RTC_INVALID_GEOMETRY_ID ? INF_F : ray_hit.ray.tfar;
 }
 
+Trace Embree_BVH::hit(const Ray& ray, const std::vector<Triangle>& triangles) const {
+	RTCIntersectContext context;
+	rtcInitIntersectContext(&context);
+	RTCRayHit ray_hit{};
+	ray_hit.ray = embree_ray(ray);
+	ray_hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+	rtcIntersect1(static_cast<RTCScene>(scene_), &context, &ray_hit);
+	Trace trace;
+	trace.origin = ray.point;
+	if (ray_hit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return trace;
+	const Triangle& tri = triangles[ray_hit.hit.primID];
+	float t = ray_hit.ray.tfar, u = ray_hit.hit.u, v = ray_hit.hit.v; // Embree's barycentrics are ours
+	trace.hit = true;
+	trace.distance = t;
+	trace.position = ray.at(t);
+	trace.normal = glm::normalize((1.0f - u - v) * tri.v0.normal + u * tri.v1.normal + v * tri.v2.normal);
+	return trace;
+}
+
 bool Embree_BVH::occluded(const Ray& ray) const {
 	RTCIntersectContext context;
 	rtcInitIntersectContext(&context);

@@ -16,6 +16,9 @@ public:
 
 	// rtcIntersect1: the closest hit distance, INF_F for a miss.
 	float closest_hit(const Ray& ray) const;
+	// rtcIntersect1, then the record BVH::hit returns (Triangle::hit's): the hit point and the vertex
+	// normals interpolated at Embree's (u, v), normalized. `triangles` as given to the constructor.
+	Trace hit(const Ray& ray, const std::vector<Triangle>& triangles) const;
 	// rtcOccluded1: whether anything is hit with t in ray.dist_bounds.
 	bool occluded(const Ray& ray) const;
 
