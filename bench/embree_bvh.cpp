@@ -63,25 +63,26 @@ RTCRay embree_ray(const Ray& ray) {
 	r.flags = 0;
 	return r;
 }
-} // namespace
 
-float Embree_BVH::closest_hit(const Ray& ray) const {
+// rtcIntersect1: the closest hit; hit.geomID is RTC_INVALID_GEOMETRY_ID for a miss.
+RTCRayHit intersect(void* scene, const Ray& ray) {
 	RTCIntersectContext context;
 	rtcInitIntersectContext(&context);
 	RTCRayHit ray_hit{};
 	ray_hit.ray = embree_ray(ray);
 	ray_hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-	rtcIntersect1(static_cast<RTCScene>(scene_), &context, &ray_hit);
+	rtcIntersect1(static_cast<RTCScene>(scene), &context, &ray_hit);
+	return ray_hit;
+}
+} // namespace
+
+float Embree_BVH::closest_hit(const Ray& ray) const {
+	RTCRayHit ray_hit = intersect(scene_, ray);
 	return ray_hit.hit.geomID == RTC_INVALID_GEOMETRY_ID ? INF_F : ray_hit.ray.tfar;
 }
 
 Trace Embree_BVH::hit(const Ray& ray, const std::vector<Triangle>& triangles) const {
-	RTCIntersectContext context;
-	rtcInitIntersectContext(&context);
-	RTCRayHit ray_hit{};
-	ray_hit.ray = embree_ray(ray);
-	ray_hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-	rtcIntersect1(static_cast<RTCScene>(scene_), &context, &ray_hit);
+	RTCRayHit ray_hit = intersect(scene_, ray);
 	Trace trace;
 	trace.origin = ray.point;
 	if (ray_hit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return trace;
