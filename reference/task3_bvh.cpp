@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <iterator>
 #include <type_traits>
 
 namespace {
@@ -371,25 +372,24 @@ namespace {
 // its verdict `hit`. IEEE float rounds each operation alone, in a vector lane as in a scalar, as
 // long as the compiler neither fuses a multiply and an add into one rounding (it may where the
 // target has FMA, __FP_FAST_FMAF: the stress suite's FMA build, ARM64) nor reorders sums
-// (-ffast-math). Then the two may round differently: `maybe` is a wider test that errs on the side
-// of a hit (ten times the edge slack, t bounds widened by 1e-4 t), and its lanes outside `hit` are
-// left to Triangle::hit.
+// (-ffast-math). Then the two may round differently: a wider test that errs on the side of a hit
+// (may_hit below) finds the lanes to leave to Triangle::hit. Where the pack is exact, that test is
+// skipped: it would only hand Triangle::hit lanes that it rejects.
 #if defined(__FP_FAST_FMAF) || defined(__FAST_MATH__)
 constexpr bool PACK_IS_EXACT = false;
 #else
 constexpr bool PACK_IS_EXACT = true;
 #endif
 
+// What hit_pack finds for the four triangles of a pack (lane i: triangle i).
 struct Pack_Hits {
-	unsigned hit;   // a bit per triangle hit with t in ray.dist_bounds
-	unsigned maybe; // a bit per triangle that may be hit (contains `hit`)
-	Float4 t;       // the ray parameter of each triangle's plane
+	unsigned hit;        // a bit per triangle hit with t in ray.dist_bounds: Triangle::hit's verdict
+	Float4 det, u, v, t; // Möller–Trumbore's determinant, barycentrics and ray parameter
 };
 
 template<typename Triangle_Pack>
 [[gnu::always_inline]] inline Pack_Hits hit_pack(const Triangle_Pack& pack, const Ray& ray) {
 	constexpr float EDGE_SLACK = 1e-5f; // Triangle::hit's
-	constexpr float WIDE_SLACK = 1e-4f;
 	Float4 e1[3], e2[3], s[3];
 	for (int axis = 0; axis < 3; axis++) {
 		e1[axis] = load4(pack.e1[axis]), e2[axis] = load4(pack.e2[axis]);
@@ -409,10 +409,18 @@ template<typename Triangle_Pack>
 	// Triangle::hit: det != 0, the edge slack, t in bounds (written positively: NaN fails).
 	Int4 hit = (det != 0) & (u >= -EDGE_SLACK) & (v >= -EDGE_SLACK) & (u + v <= 1.0f + EDGE_SLACK) &
 	           (t >= ray.dist_bounds.x) & (t <= ray.dist_bounds.y) & (t < INF_F);
+	return Pack_Hits{lane_bits(hit), det, u, v, t};
+}
+
+// The wider test, for where the pack may round otherwise than Triangle::hit: a bit per triangle
+// that may be hit (ten times the edge slack, t bounds widened by 1e-4 t), a superset of `hit`.
+inline unsigned may_hit(const Pack_Hits& pack, const Ray& ray) {
+	constexpr float WIDE_SLACK = 1e-4f;
+	Float4 t = pack.t, u = pack.u, v = pack.v;
 	Float4 t_margin = WIDE_SLACK * (t < 0 ? -t : t);
-	Int4 maybe = (det != 0) & (u >= -WIDE_SLACK) & (v >= -WIDE_SLACK) & (u + v <= 1 + WIDE_SLACK) &
+	Int4 maybe = (pack.det != 0) & (u >= -WIDE_SLACK) & (v >= -WIDE_SLACK) & (u + v <= 1 + WIDE_SLACK) &
 	             (t >= ray.dist_bounds.x - t_margin) & (t <= ray.dist_bounds.y + t_margin);
-	return Pack_Hits{lane_bits(hit), lane_bits(maybe | hit), t};
+	return lane_bits(maybe) | pack.hit;
 }
 
 // What the any-hit query returns when a pack finds a hit: occluded() reads only `hit`.
@@ -453,15 +461,22 @@ template<bool ANY_HIT, typename Wide_Node>
 // the lab's test bit for bit. If that misses (only where the pack rounded otherwise: fused
 // multiply-add), the query starts over with `exact`: every candidate tested by Triangle::hit.
 template<bool ANY_HIT, typename Primitive>
-Trace traverse(const BVH<Primitive>& bvh, const Ray& ray, bool exact = false) {
+Trace traverse(const BVH<Primitive>& bvh, const Ray& ray, bool exact = false);
+Trace record(const BVH<Triangle>& bvh, const Ray& ray, uint32_t best, bool exact);
+
+template<bool ANY_HIT, typename Primitive>
+Trace traverse(const BVH<Primitive>& bvh, const Ray& ray, bool exact) {
 	struct Child { // a wide node (count 0) or a leaf's primitives
 		uint32_t first, count;
 		float t_enter;
 	};
-	// One stack per thread and instantiation, reused by every ray (so a mesh traversed from inside
-	// the scene's traversal does not disturb it). It only grows.
-	thread_local std::vector<Child> stack(64);
-	size_t top = 0;
+	// The children waiting, nearest on top: on the call stack (a thread_local vector's lookup cost
+	// 4 % of a primary ray), moved to the heap if a deep tree fills it. 64 is three times what the
+	// bench scenes' rays need.
+	Child local_stack[64];
+	std::vector<Child> heap_stack;
+	Child* stack = local_stack;
+	size_t capacity = std::size(local_stack), top = 0;
 
 	Ray r = ray; // r.dist_bounds.y shrinks to the closest hit found so far
 	Slab_Ray slab_ray(ray);
@@ -477,9 +492,12 @@ Trace traverse(const BVH<Primitive>& bvh, const Ray& ray, bool exact = false) {
 				for (uint32_t p = child.first; p < child.first + (child.count + 3) / 4; p++) {
 					const auto& pack = bvh.triangle_packs[p];
 					Pack_Hits hits = hit_pack(pack, r);
-					if (exact) hits.hit = 0; // the fallback below: every candidate to Triangle::hit
-					// Candidates the pack cannot decide (rounding with fused multiply-add): the lab's test.
-					for (unsigned lanes = hits.maybe & ~hits.hit; lanes != 0; lanes &= lanes - 1) {
+					// Candidates the pack cannot decide (rounding with fused multiply-add), and in the
+					// fallback below every candidate: the lab's test.
+					unsigned undecided = PACK_IS_EXACT && !exact ? 0 : may_hit(hits, r);
+					if (exact) hits.hit = 0;
+					undecided &= ~hits.hit;
+					for (unsigned lanes = undecided; lanes != 0; lanes &= lanes - 1) {
 						uint32_t i = pack.index[__builtin_ctz(lanes)];
 						Trace trace = bvh.primitives[i].hit(r);
 						if (!trace.hit) continue;
@@ -513,7 +531,11 @@ Trace traverse(const BVH<Primitive>& bvh, const Ray& ray, bool exact = false) {
 			float t_enter[WIDTH];
 			unsigned mask = hit_children(node, slab_ray, r.dist_bounds, t_enter);
 			if (mask != 0) {
-				if (top + WIDTH > stack.size()) stack.resize(2 * stack.size());
+				if (top + WIDTH > capacity) { // a deep tree: the stack moves to the heap, twice as large
+					if (stack == local_stack) heap_stack.assign(local_stack, local_stack + top);
+					heap_stack.resize(capacity *= 2);
+					stack = heap_stack.data();
+				}
 				auto hit = [&](int slot) { return Child{node.first[slot], node.count[slot], t_enter[slot]}; };
 				if constexpr (std::is_same_v<Primitive, Triangle>) { // the leaves found, fetched at once
 					for (unsigned leaves = mask; leaves != 0; leaves &= leaves - 1) {
@@ -561,15 +583,20 @@ Trace traverse(const BVH<Primitive>& bvh, const Ray& ray, bool exact = false) {
 		child = stack[--top];
 	}
 	if constexpr (std::is_same_v<Primitive, Triangle>) {
-		// The closest triangle's record (its normal, position) from the lab's test on the whole ray.
-		if (ANY_HIT || best == NONE) return closest;
-		Trace trace = bvh.primitives[best].hit(ray);
-		// A miss only where the pack's arithmetic rounded otherwise (fused multiply-add): start over
-		// with every candidate tested by Triangle::hit (whose winner hits again).
-		if (trace.hit || exact) return trace;
-		return traverse<ANY_HIT>(bvh, ray, true);
+		if (!ANY_HIT && best != NONE) return record(bvh, ray, best, exact);
 	}
 	return closest;
+}
+
+// The closest triangle's record (its normal, position) from the lab's test on the whole ray. A
+// miss only where the pack's arithmetic rounded otherwise (fused multiply-add): start over with
+// every candidate tested by Triangle::hit (whose winner hits again). Returned as one variable, the
+// record is written once, where the caller wants it: a copy, read back before Triangle::hit's
+// stores have landed, cost a primary ray several percent.
+Trace record(const BVH<Triangle>& bvh, const Ray& ray, uint32_t best, bool exact) {
+	Trace trace = bvh.primitives[best].hit(ray);
+	if (!trace.hit && !exact) trace = traverse<false>(bvh, ray, true);
+	return trace;
 }
 
 } // namespace

@@ -1,7 +1,7 @@
 // Stress (handout §3): BVH::hit equals brute force where floating point and degenerate geometry
 // bite: axis-aligned rays (1/0 = inf in the slab test), rays starting exactly on box faces and
 // lying in them (0 * inf = NaN), flat boxes of planar walls, coincident centroids (a split that
-// cannot separate anything), and 10^6 identical triangles.
+// cannot separate anything), 10^6 identical triangles, and a tree dozens of levels deep.
 #include "rng.h"
 #include "shape_oracle.h"
 #include "stress_count.h"
@@ -9,6 +9,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <functional>
 
 namespace {
@@ -171,4 +172,26 @@ TEST_CASE("Stress: a BVH over 10^6 identical triangles builds and hits like one 
 		          [&] { return shape_oracle::show(ray); });
 	}
 	require_agreement(count, "10^6 identical triangles");
+}
+
+TEST_CASE("Stress: BVH equals brute force on a tree dozens of levels deep", "[stress][task3]") {
+	// 780 parallel triangles in the planes x = 1e-37 * 1.25^k, spread over float's whole range:
+	// binned SAH splits off a dozen at a time, 66 levels deep, and a ray along the row overlaps the
+	// boxes of everything ahead of it, so the traversal keeps some 70 children pending (more than
+	// the reference's stack holds before it moves to the heap). The last ten triangles face the
+	// other way (they cover y + z >= 1, the others y + z <= 1): a ray with y + z > 1 passes by every
+	// triangle until them, so its hit is in a child that waited at the bottom of the stack.
+	std::vector<Triangle> tris;
+	for (int k = 0; k < 780; k++) {
+		float x = float(1e-37 * std::pow(1.25, k));
+		if (k < 770) tris.push_back(flat_triangle(Vec3{x, -1.0f, -1.0f}, Vec3{x, 2.0f, -1.0f}, Vec3{x, -1.0f, 2.0f}));
+		else tris.push_back(flat_triangle(Vec3{x, 2.0f, 2.0f}, Vec3{x, -1.0f, 2.0f}, Vec3{x, 2.0f, -1.0f}));
+	}
+	auto ray = [](RNG& rng) {
+		float x = float(1e-37 * std::pow(1.25, 781.0 * rng.unit() - 1.0)); // somewhere along the row
+		float offset = rng.coin_flip(0.5f) ? -0.5f : 1.0f; // y + z < 1 or y + z > 1
+		Vec3 origin{x, offset + 0.5f * rng.unit(), offset + 0.5f * rng.unit()};
+		return Ray(origin, Vec3{rng.coin_flip(0.5f) ? 1.0f : -1.0f, 0.0f, 0.0f});
+	};
+	require_agreement(compare(tris, ray, 2000, 7), "780 triangles in a row, a deep tree");
 }
