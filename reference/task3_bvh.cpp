@@ -166,6 +166,9 @@ Split best_split(const Build_Item* begin, const Build_Item* end, const BBox& cen
 //   record-less variant: 0.76 to 1.02 against 0.60 to 0.71); alternating runs, 6 on large.json:
 //   0.80 / 0.59 / 0.65 against 0.75 / 0.62 / 0.65 (bunny, 3 runs: 0.98 / 0.56 / 0.60 against
 //   1.01 / 0.54 / 0.63, within its noise)
+// - the wider pack test only where the pack may round otherwise, the record written in place
+//   (record()), the stack on the call stack; the old and new traversal timed in one binary:
+//   primary +2 to +9 % (large.json +4 to +5 %), occlusion up to +13 %, incoherent within the noise
 // The traversal waits on memory: most of its time goes to the first loads of a node and a pack.
 // (Prefetching the far child bought nothing measurable; a leaf's pack, rarely cached, does.)
 // Tried and dropped: leaves of up to eight triangles (two packs) in the wide tree, binary subtrees
