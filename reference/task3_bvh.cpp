@@ -591,11 +591,10 @@ Trace traverse(const BVH<Primitive>& bvh, const Ray& ray, bool exact) {
 	return closest;
 }
 
-// The closest triangle's record (its normal, position) from the lab's test on the whole ray. A
-// miss only where the pack's arithmetic rounded otherwise (fused multiply-add): start over with
-// every candidate tested by Triangle::hit (whose winner hits again). Returned as one variable, the
-// record is written once, where the caller wants it: a copy, read back before Triangle::hit's
-// stores have landed, cost a primary ray several percent.
+// The closest triangle's record (its normal, position): Triangle::hit on the whole ray, or if that
+// misses, the `exact` query (above). Returned as one variable, the record is written once, where
+// the caller wants it: a copy, read back before Triangle::hit's stores have landed, cost a primary
+// ray several percent.
 Trace record(const BVH<Triangle>& bvh, const Ray& ray, uint32_t best, bool exact) {
 	Trace trace = bvh.primitives[best].hit(ray);
 	if (!trace.hit && !exact) trace = traverse<false>(bvh, ray, true);
