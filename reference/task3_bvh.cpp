@@ -173,7 +173,8 @@ Split best_split(const Build_Item* begin, const Build_Item* end, const BBox& cen
 // (Prefetching the far child bought nothing measurable; a leaf's pack, rarely cached, does.)
 // Tried and dropped: leaves of up to eight triangles (two packs) in the wide tree, binary subtrees
 // of five to eight folded into one leaf: bunny 0.68 / 0.50 / 0.50 against 0.74 / 0.45 / 0.44 (4
-// runs), large.json 0.58 / 0.56 / 0.54 against 0.57 / 0.57 / 0.59 (3 runs).
+// runs), large.json 0.58 / 0.56 / 0.54 against 0.57 / 0.57 / 0.59 (3 runs); folded only where the
+// SAH prefers it, within 2 % on large.json, timed in one process (bench/README.md).
 
 // Four floats, handled by one SSE/NEON instruction per operation (GCC's and Clang's vector
 // extension: arithmetic and comparisons work lane by lane; a comparison gives 0 or -1 per lane).
