@@ -20,6 +20,21 @@ public:
 	Vec2 unit2();                  // two independent unit() numbers
 	bool coin_flip(float p);       // true with probability p
 
+	// The generator's exact state, so that a grader can hand its student's code (in another
+	// process, tests/judge/protocol.h) the very numbers it chose.
+	struct State {
+		uint64_t state = 0, increment = 1;
+	};
+	State save() const {
+		return State{state, increment};
+	}
+	static RNG restore(State saved) {
+		RNG rng;
+		rng.state = saved.state;
+		rng.increment = saved.increment | 1u; // PCG's increment is odd
+		return rng;
+	}
+
 private:
 	uint64_t state = 0;
 	uint64_t increment = 1;

@@ -2,11 +2,7 @@
 
 #include "error.h"
 #include "image_io.h"
-#include "report_record.h"
 #include "scene_loader.h"
-#include "z_heat_map.h"
-
-#include <catch2/catch.hpp>
 
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -75,40 +71,18 @@ void write_reference(const Graded_Scene& scene, const Film& film, const Render_S
 	std::ofstream(reference_file(scene.name, ".json")) << record.dump(1, '\t') << "\n";
 }
 
+Reference_Check compare_with_reference(const Graded_Scene& scene, const Film& film, const Render_Settings& settings) {
+	Image_Estimate render = Image_Estimate::from(film);
+	Image_Estimate reference = read_reference(scene, settings);
+	Image_Comparison comparison = compare_images(render, reference);
+	return Reference_Check{comparison, film.non_finite(), std::move(render), std::move(reference)};
+}
+
 Reference_Check check_against_reference(const Graded_Scene& scene, std::optional<uint64_t> seed) {
 	Render_Options options;
 	options.threads = 2;
 	Scene loaded = load_graded(scene);
 	uint64_t render_seed = seed.value_or(loaded.settings.seed);
 	Film film = render_graded(scene, loaded, loaded.settings.samples, render_seed, options);
-	Image_Estimate render = Image_Estimate::from(film);
-	Image_Estimate reference = read_reference(scene, loaded.settings);
-	Image_Comparison comparison = compare_images(render, reference);
-	return Reference_Check{comparison, film.non_finite(), std::move(render), std::move(reference)};
-}
-
-namespace {
-// The grade report's picture of a reference-image test: the render and the reference as `./lab
-// render` shows them (exposure 0), and where they differ; written as <task>_<scene>_*.png.
-void report_images(const std::string& name, const Reference_Check& check) {
-	const Image_Comparison& c = check.comparison;
-	std::string prefix = report::task_name() + "_" + name;
-	std::string render = prefix + "_render.png", reference = prefix + "_reference.png", z_map = prefix + "_z.png";
-	write_png(report::file(render), check.render.mean);
-	write_png(report::file(reference), check.reference.mean);
-	write_png(report::file(z_map), z_heat_map(z_scores(check.render, check.reference), c.z_critical));
-	report::attach({{"type", "image_test"}, {"scene", graded_scene_file(name)}, {"render", render},
-	                {"reference", reference}, {"z_map", z_map}, {"pass", c.pass && check.non_finite == 0},
-	                {"message", c.message}, {"non_finite", check.non_finite}, {"failed", c.failed},
-	                {"tests", c.tests}, {"z_critical", c.z_critical}, {"rel_mse", c.rel_mse}});
-}
-} // namespace
-
-void check_renders_like_reference(const std::string& name, const std::string& hint) {
-	Reference_Check check = check_against_reference(graded_scene(name));
-	if (report::enabled()) report_images(name, check);
-	INFO("scenes/graded/" << name << ".json: " << check.comparison.message);
-	INFO(hint);
-	CHECK(check.non_finite == 0);
-	CHECK(check.comparison.pass);
+	return compare_with_reference(scene, film, loaded.settings);
 }

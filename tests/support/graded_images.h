@@ -39,19 +39,16 @@ Film render_graded(const Graded_Scene& graded, const Scene& scene, uint32_t samp
 Image_Estimate read_reference(const Graded_Scene& graded, const Render_Settings& grader);
 void write_reference(const Graded_Scene& graded, const Film& film, const Render_Settings& settings);
 
-// Renders the scene with the graders' settings (and `seed` if given) and compares the render with the
-// stored reference.
+// A render compared with the stored reference.
 struct Reference_Check {
 	Image_Comparison comparison;
 	uint64_t non_finite = 0;
 	Image_Estimate render, reference; // the images compared
 };
+// `film`, rendered with the scene's `settings` (size, depth), compared with the stored reference.
+Reference_Check compare_with_reference(const Graded_Scene& graded, const Film& film, const Render_Settings& settings);
+
+// Renders the scene with the reference implementation and the graders' settings (and `seed` if
+// given) and compares the render with the stored reference.
 Reference_Check check_against_reference(const Graded_Scene& graded,
                                         std::optional<uint64_t> seed = std::nullopt);
-
-// The grader's reference-image check as Catch2 checks: renders the graded scene `name` with the task
-// under test, compares it with the stored reference, and on failure shows where the image differs
-// and `hint` (what to look at, in the handout's terms). For the grade report (report_record.h) it also
-// writes the render, the reference and a heat map of the z-scores (z_heat_map.h) as PNGs and
-// attaches them to the test case.
-void check_renders_like_reference(const std::string& name, const std::string& hint);

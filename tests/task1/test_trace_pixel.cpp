@@ -1,8 +1,10 @@
 // Task 1, handout §1.3: Pathtracer::trace_pixel, one supersampling sample per call. In the
 // View::direction debug view, trace() returns the colour 0.5 (d + 1) of the camera ray's
 // direction d (framework/pathtracer.cpp), so the grader can recover the film point of every
-// sample with its own camera model and look at where in the pixel it fell.
-#include "camera_model.h"
+// sample from the reference camera's film plane (camera_check.h) and look at where in the pixel it
+// fell.
+#include "camera_check.h"
+#include "judge.h"
 #include "pathtracer.h"
 #include "statistics.h"
 
@@ -12,6 +14,7 @@
 #include <sstream>
 
 using namespace task1;
+using protocol::Trace_Pixels;
 
 namespace {
 
@@ -51,16 +54,29 @@ struct Sample {
 	bool valid;  // the colour decodes to a unit direction
 };
 
-// Sample s of pixel (x, y), seeded as the renderer seeds it (framework/render.cpp).
-Sample sample_pixel(const Pathtracer& pathtracer, const Camera_Model& model, uint32_t x, uint32_t y, uint32_t s) {
-	RNG rng = RNG::for_sample(SEED, size_t(y) * WIDTH + x, s);
-	Spectrum colour = pathtracer.trace_pixel(x, y, rng);
-	Sample sample;
-	sample.dir = 2.0 * DVec3(colour) - 1.0;
-	sample.valid = std::abs(glm::length(sample.dir) - 1.0) < 1e-5;
-	DVec2 uv = model.film_uv(sample.dir);
-	sample.pixel = DVec2(uv.x * WIDTH, uv.y * HEIGHT);
-	return sample;
+using Pixel = std::pair<uint32_t, uint32_t>;
+
+// Samples 0 .. n - 1 of each pixel, seeded as the renderer seeds them (framework/render.cpp), from
+// the student's trace_pixel in one request.
+std::vector<std::vector<Sample>> sample_pixels(const Scene& scene, const std::vector<Pixel>& pixels, uint32_t n) {
+	Trace_Pixels request{scene, film_settings(), View::direction, {}};
+	for (auto [x, y] : pixels) {
+		for (uint32_t s = 0; s < n; s++) {
+			request.samples.push_back({x, y, RNG::for_sample(SEED, size_t(y) * WIDTH + x, s).save()});
+		}
+	}
+	std::vector<Spectrum> colours = judge::ask(request);
+	Film_Plane plane(scene.camera);
+	std::vector<std::vector<Sample>> samples(pixels.size());
+	for (size_t i = 0; i < colours.size(); i++) {
+		Sample sample;
+		sample.dir = 2.0 * DVec3(colours[i]) - 1.0;
+		sample.valid = std::abs(glm::length(sample.dir) - 1.0) < 1e-5;
+		DVec2 uv = plane.film_uv(sample.dir);
+		sample.pixel = DVec2(uv.x * WIDTH, uv.y * HEIGHT);
+		samples[i / n].push_back(sample);
+	}
+	return samples;
 }
 
 bool inside(DVec2 offset, double lo, double hi) {
@@ -82,10 +98,9 @@ struct Offsets {
 	Spectrum bad_colour{0.0f};         // the first of those
 };
 
-Offsets collect_offsets(const Pathtracer& pathtracer, const Camera_Model& model, uint32_t x, uint32_t y, uint32_t n) {
+Offsets collect_offsets(const std::vector<Sample>& samples, uint32_t x, uint32_t y) {
 	Offsets result;
-	for (uint32_t s = 0; s < n; s++) {
-		Sample sample = sample_pixel(pathtracer, model, x, y, s);
+	for (const Sample& sample : samples) {
 		if (!sample.valid) {
 			if (result.undecodable++ == 0) result.bad_colour = Spectrum(0.5 * (sample.dir + 1.0));
 			continue;
@@ -137,12 +152,11 @@ std::string outside_problem(const Offsets& o, uint32_t x, uint32_t y, uint32_t n
 } // namespace
 
 TEST_CASE("trace_pixel: every sample of pixel (x, y) falls inside that pixel, in any corner of the film") {
-	Scene scene = direction_scene();
-	Pathtracer pathtracer(scene, film_settings(), View::direction);
-	Camera_Model model(scene.camera);
-	for (auto [x, y] : std::vector<std::pair<uint32_t, uint32_t>>{
-	         {0, 0}, {WIDTH - 1, 0}, {0, HEIGHT - 1}, {WIDTH - 1, HEIGHT - 1}, {17, 29}, {40, 3}}) {
-		std::string problem = outside_problem(collect_offsets(pathtracer, model, x, y, 2000), x, y, 2000);
+	const std::vector<Pixel> pixels{{0, 0}, {WIDTH - 1, 0}, {0, HEIGHT - 1}, {WIDTH - 1, HEIGHT - 1}, {17, 29}, {40, 3}};
+	std::vector<std::vector<Sample>> samples = sample_pixels(direction_scene(), pixels, 2000);
+	for (size_t i = 0; i < pixels.size(); i++) {
+		auto [x, y] = pixels[i];
+		std::string problem = outside_problem(collect_offsets(samples[i], x, y), x, y, 2000);
 		INFO(problem);
 		CHECK(problem.empty());
 		if (!problem.empty()) return;
@@ -154,12 +168,11 @@ TEST_CASE("trace_pixel: samples are uniform over the pixel around its centre (x 
 	// uniformity, and z-tests that the mean offset is the pixel centre 0.5 (variance 1/12 per axis).
 	constexpr uint32_t N = 100000;
 	const double z_max = stats::two_sided_z(ALPHA);
-	Scene scene = direction_scene();
-	Pathtracer pathtracer(scene, film_settings(), View::direction);
-	Camera_Model model(scene.camera);
-	for (auto [x, y] : STAT_PIXELS) {
+	std::vector<std::vector<Sample>> samples = sample_pixels(direction_scene(), STAT_PIXELS, N);
+	for (size_t i = 0; i < STAT_PIXELS.size(); i++) {
+		auto [x, y] = STAT_PIXELS[i];
 		CAPTURE(x, y);
-		Offsets offsets = collect_offsets(pathtracer, model, x, y, N);
+		Offsets offsets = collect_offsets(samples[i], x, y);
 		{
 			std::string problem = outside_problem(offsets, x, y, N);
 			INFO(problem);

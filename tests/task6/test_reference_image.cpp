@@ -2,7 +2,7 @@
 // traced with the mixture of BSDF and light sampling.
 // The render is compared with the stored reference pixel by pixel, by a z-test that knows the noise
 // of both (tests/support/image_compare.h); scenes/graded/references/ holds the reference.
-#include "graded_images.h"
+#include "student_renders.h"
 
 #include <catch2/catch.hpp>
 

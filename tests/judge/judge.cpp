@@ -1,0 +1,137 @@
+// The judge's program: Catch2's runner with the judge's options, and the per-test-case subject.
+//
+//   judge_taskN --subject PROGRAM [--seed S | --seed @FILE] [--sandbox auto|bubblewrap|none]
+//               [--save-requests DIR] [Catch2 options]
+#define CATCH_CONFIG_RUNNER
+#define CATCH_CONFIG_EXTERNAL_INTERFACES
+#include <catch2/catch.hpp>
+
+#include "judge.h"
+
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+namespace {
+
+struct Judge_State {
+	std::string program;   // the subject program
+	std::optional<Sandbox> sandbox;
+	std::optional<uint64_t> secret_seed;
+	std::string save_dir;  // where test cases' requests are saved, or empty
+	// The running test case.
+	std::string test_case;
+	size_t test_case_number = 0;
+	Subject::Clock::time_point deadline;
+	std::unique_ptr<Subject> subject;
+};
+
+Judge_State& state() {
+	static Judge_State s;
+	return s;
+}
+
+std::string requests_file() {
+	Judge_State& s = state();
+	if (s.save_dir.empty()) return "";
+	std::string slug;
+	for (char c : s.test_case) slug += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+	return s.save_dir + "/" + std::to_string(s.test_case_number) + "_" + slug.substr(0, 60) + ".requests";
+}
+
+// Starts each test case with no subject and its own time limit, and ends its subject with it.
+class Subject_Lifecycle : public Catch::TestEventListenerBase {
+public:
+	using TestEventListenerBase::TestEventListenerBase;
+
+	void testCaseStarting(const Catch::TestCaseInfo& info) override {
+		Judge_State& s = state();
+		s.subject.reset();
+		s.test_case = info.name;
+		s.test_case_number++;
+		s.deadline = Subject::Clock::now() + std::chrono::duration_cast<Subject::Clock::duration>(
+		                                        std::chrono::duration<double>(s.sandbox->limits().test_case_seconds));
+		if (!s.save_dir.empty()) std::filesystem::remove(requests_file());
+	}
+
+	void testCaseEnded(const Catch::TestCaseStats& stats) override {
+		Judge_State& s = state();
+		s.subject.reset();
+		if (!s.save_dir.empty() && stats.totals.assertions.failed == 0) std::filesystem::remove(requests_file());
+	}
+};
+
+std::optional<uint64_t> parse_seed(const std::string& text) {
+	if (text.empty()) return std::nullopt;
+	std::string digits = text;
+	if (text[0] == '@') {
+		std::ifstream in(text.substr(1));
+		if (!(in >> digits)) throw std::invalid_argument("cannot read a seed from " + text.substr(1));
+	}
+	size_t used = 0;
+	uint64_t seed = std::stoull(digits, &used, 0);
+	if (used != digits.size()) throw std::invalid_argument("--seed takes a number, not '" + digits + "'");
+	return seed;
+}
+
+} // namespace
+
+CATCH_REGISTER_LISTENER(Subject_Lifecycle)
+
+namespace judge {
+
+Subject& subject() {
+	Judge_State& s = state();
+	if (!s.subject) s.subject = std::make_unique<Subject>(s.program, *s.sandbox, s.deadline, requests_file());
+	return *s.subject;
+}
+
+std::optional<uint64_t> secret_seed() {
+	return state().secret_seed;
+}
+
+RNG case_generator(const std::string& what) {
+	uint64_t h = 1469598103934665603ull; // FNV-1a of `what`, a stream per test case
+	for (unsigned char c : what) h = (h ^ c) * 1099511628211ull;
+	return RNG(state().secret_seed.value_or(0), h);
+}
+
+const Sandbox& sandbox() {
+	return *state().sandbox;
+}
+
+} // namespace judge
+
+int main(int argc, char** argv) {
+	Catch::Session session;
+	Judge_State& s = state();
+	std::string sandbox_mode = "auto", seed_text;
+	using Catch::clara::Opt;
+	session.cli(session.cli() |
+	            Opt(s.program, "program")["--subject"]("the subject program that runs the code under test") |
+	            Opt(seed_text, "seed|@file")["--seed"]("an instructor's secret grading seed, or a file holding it") |
+	            Opt(sandbox_mode, "auto|bubblewrap|none")["--sandbox"]("how the subject runs (default auto)") |
+	            Opt(s.save_dir, "folder")["--save-requests"]("save failed test cases' requests for --replay"));
+	if (int status = session.applyCommandLine(argc, argv)) return status;
+	if (session.configData().listTests || session.configData().listTestNamesOnly || session.configData().showHelp) {
+		s.sandbox = Sandbox::choose("none");
+		return session.run();
+	}
+	try {
+		if (s.program.empty() || access(s.program.c_str(), X_OK) != 0) {
+			throw std::invalid_argument("--subject must name the subject program (got '" + s.program + "')");
+		}
+		s.program = std::filesystem::absolute(s.program).string();
+		s.secret_seed = parse_seed(seed_text);
+		s.sandbox = Sandbox::choose(sandbox_mode);
+		if (!s.save_dir.empty()) std::filesystem::create_directories(s.save_dir);
+	} catch (const std::exception& problem) {
+		std::cerr << "judge: " << problem.what() << "\n";
+		return 2;
+	}
+	std::cout << s.sandbox->notice() << "\n"
+	          << (s.secret_seed ? "inputs: drawn from the grading seed" : "inputs: the public test cases") << "\n";
+	return session.run();
+}

@@ -1,0 +1,363 @@
+#pragma once
+// The judge-subject protocol: how a grader (the *judge*) asks a student's code (the *subject*, a
+// separate sandboxed process, tests/judge/subject_main.cpp) to run a task function on inputs the
+// judge chose, and gets the raw outputs back to check them itself.
+//
+// Transport: the subject reads requests from file descriptor 3 and writes answers to descriptor 4
+// (its stdout and stderr are only logged, never read for a verdict). Every message is a header
+// followed by `length` bytes of payload:
+//
+//   request: u32 MAGIC, u32 kind, u32 sequence, u64 length, payload
+//   answer:  u32 MAGIC, u32 kind, u32 sequence, u32 status, u64 length, payload
+//
+// An answer repeats its request's kind and sequence number; anything else is an answer out of turn
+// and ends the subject. status OK: the payload is the request's Answer; status THREW: the payload
+// is the text of the exception the task function threw. Numbers are little-endian, floats are IEEE
+// binary32 bit patterns, a vector is a u64 count and its elements, a string a u64 length and bytes.
+// The encoding of each type is in wire.h.
+//
+// Requests are batched: one request per student function (or per render) with every input of a
+// test case, never one request per ray. Each request below names the task function it runs, its
+// inputs and its Answer. Functions that sample take one generator (RNG_State) for the whole batch
+// and draw from it in the order of the inputs, as a loop over the inputs would.
+#include "material.h"
+#include "pathtracer.h"
+#include "film.h"
+#include "scene.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace protocol {
+
+constexpr uint32_t MAGIC = 0x4a4c5450; // "PTLJ"
+constexpr uint64_t MAX_PAYLOAD = uint64_t(1) << 30; // larger messages are malformed
+constexpr int REQUEST_FD = 3, ANSWER_FD = 4;
+
+enum class Status : uint32_t { OK = 0, THREW = 1 };
+
+enum class Kind : uint32_t {
+	generate_rays = 1,
+	trace_pixels,
+	render,
+	triangle_hits,
+	sphere_hits,
+	bbox_hits,
+	bvh_triangles,
+	bvh_instances,
+	bsdf_scatter,
+	bsdf_evaluate,
+	bsdf_pdf,
+	reflect,
+	refract,
+	fresnel,
+	sample_incoming,
+	direction_to_uv,
+	uv_to_direction,
+	uniform_sphere,
+	image_sampler,
+	env_map,
+};
+const char* kind_name(Kind kind);
+// The student functions a request runs, in the handouts' words (for messages).
+const char* kind_functions(Kind kind);
+
+// A generator's exact state (rng.h), so the subject draws the numbers the judge chose.
+using RNG_State = RNG::State;
+
+// ---- Task 1 ----
+
+// Camera::generate_ray(film_uv) for each query.
+struct Generate_Rays {
+	static constexpr Kind KIND = Kind::generate_rays;
+	struct Query {
+		Camera camera;
+		Vec2 film_uv;
+		template<class A> void fields(A& a) { a(camera, film_uv); }
+	};
+	std::vector<Query> queries;
+	template<class A> void fields(A& a) { a(queries); }
+	using Answer = std::vector<Ray>;
+};
+
+// Pathtracer(scene, settings, view).trace_pixel(x, y, rng) for each sample, each with its own
+// generator.
+struct Trace_Pixels {
+	static constexpr Kind KIND = Kind::trace_pixels;
+	struct Sample {
+		uint32_t x = 0, y = 0;
+		RNG_State rng;
+		template<class A> void fields(A& a) { a(x, y, rng); }
+	};
+	Scene scene;
+	Render_Settings settings;
+	View view = View::path;
+	std::vector<Sample> samples;
+	template<class A> void fields(A& a) { a(scene, settings, view, samples); }
+	using Answer = std::vector<Spectrum>;
+};
+
+// render(Pathtracer(scene, settings, view)) on `threads` threads: the whole film, every pixel's
+// samples drawn by the framework as `./lab render` draws them.
+struct Render {
+	static constexpr Kind KIND = Kind::render;
+	Scene scene;
+	Render_Settings settings;
+	View view = View::path;
+	uint32_t threads = 1;
+	template<class A> void fields(A& a) { a(scene, settings, view, threads); }
+	using Answer = Film;
+};
+
+// ---- Task 2 ----
+
+// Triangle::hit(ray) for each pair.
+struct Triangle_Hits {
+	static constexpr Kind KIND = Kind::triangle_hits;
+	struct Query {
+		Triangle triangle;
+		Ray ray;
+		template<class A> void fields(A& a) { a(triangle, ray); }
+	};
+	std::vector<Query> queries;
+	template<class A> void fields(A& a) { a(queries); }
+	using Answer = std::vector<Trace>;
+};
+
+// Sphere::hit(ray) for each pair.
+struct Sphere_Hits {
+	static constexpr Kind KIND = Kind::sphere_hits;
+	struct Query {
+		Sphere sphere;
+		Ray ray;
+		template<class A> void fields(A& a) { a(sphere, ray); }
+	};
+	std::vector<Query> queries;
+	template<class A> void fields(A& a) { a(queries); }
+	using Answer = std::vector<Trace>;
+};
+
+// ---- Task 3 ----
+
+// BBox::hit(ray, times) for each query: whether it hit, and `times` as the call left it.
+struct BBox_Hits {
+	static constexpr Kind KIND = Kind::bbox_hits;
+	struct Query {
+		BBox box;
+		Ray ray;
+		Vec2 times;
+		template<class A> void fields(A& a) { a(box, ray, times); }
+	};
+	struct Result {
+		bool hit = false;
+		Vec2 times;
+		template<class A> void fields(A& a) { a(hit, times); }
+	};
+	std::vector<Query> queries;
+	template<class A> void fields(A& a) { a(queries); }
+	using Answer = std::vector<Result>;
+};
+
+// A built BVH's nodes (bvh.h), as the student's BVH::build left them.
+struct Tree {
+	struct Node {
+		BBox bbox;
+		uint64_t start = 0, size = 0, l = 0, r = 0;
+		template<class A> void fields(A& a) { a(bbox, start, size, l, r); }
+	};
+	std::vector<Node> nodes;
+	uint64_t root_idx = 0;
+	template<class A> void fields(A& a) { a(nodes, root_idx); }
+};
+
+// BVH<Triangle>(triangles, max_leaf_size), then bvh.hit(ray) for each ray.
+struct BVH_Triangles {
+	static constexpr Kind KIND = Kind::bvh_triangles;
+	std::vector<Triangle> triangles;
+	uint64_t max_leaf_size = 1;
+	std::vector<Ray> rays;
+	template<class A> void fields(A& a) { a(triangles, max_leaf_size, rays); }
+	struct Answer {
+		Tree tree;
+		std::vector<Triangle> primitives; // bvh.primitives: the triangles in the build's order
+		std::vector<Trace> hits;
+		template<class A> void fields(A& a) { a(tree, primitives, hits); }
+	};
+};
+
+// BVH<Instance>(the scene's objects, max_leaf_size), then bvh.hit(ray) for each ray. The objects'
+// meshes are built by Tri_Mesh, with the task-3 BVH too.
+struct BVH_Instances {
+	static constexpr Kind KIND = Kind::bvh_instances;
+	Scene scene; // only its objects are used
+	uint64_t max_leaf_size = 1;
+	std::vector<Ray> rays;
+	template<class A> void fields(A& a) { a(scene, max_leaf_size, rays); }
+	struct Answer {
+		Tree tree;
+		std::vector<uint32_t> order; // Instance::index of bvh.primitives[i]
+		std::vector<Trace> hits;
+		template<class A> void fields(A& a) { a(tree, order, hits); }
+	};
+};
+
+// ---- Tasks 4 and 5 ----
+
+// bsdf.scatter(rng, out_dir) for each direction, from one generator.
+struct BSDF_Scatter {
+	static constexpr Kind KIND = Kind::bsdf_scatter;
+	BSDF bsdf;
+	std::vector<Vec3> out_dirs;
+	RNG_State rng;
+	template<class A> void fields(A& a) { a(bsdf, out_dirs, rng); }
+	using Answer = std::vector<Scatter>;
+};
+
+struct Direction_Pair {
+	Vec3 out_dir, in_dir;
+	template<class A> void fields(A& a) { a(out_dir, in_dir); }
+};
+
+// bsdf.evaluate(out_dir, in_dir) for each pair.
+struct BSDF_Evaluate {
+	static constexpr Kind KIND = Kind::bsdf_evaluate;
+	BSDF bsdf;
+	std::vector<Direction_Pair> pairs;
+	template<class A> void fields(A& a) { a(bsdf, pairs); }
+	using Answer = std::vector<Spectrum>;
+};
+
+// bsdf.pdf(out_dir, in_dir) for each pair.
+struct BSDF_Pdf {
+	static constexpr Kind KIND = Kind::bsdf_pdf;
+	BSDF bsdf;
+	std::vector<Direction_Pair> pairs;
+	template<class A> void fields(A& a) { a(bsdf, pairs); }
+	using Answer = std::vector<float>;
+};
+
+// reflect(dir) for each direction.
+struct Reflect {
+	static constexpr Kind KIND = Kind::reflect;
+	std::vector<Vec3> dirs;
+	template<class A> void fields(A& a) { a(dirs); }
+	using Answer = std::vector<Vec3>;
+};
+
+// refract(out_dir, index_of_refraction, was_internal) for each query.
+struct Refract {
+	static constexpr Kind KIND = Kind::refract;
+	struct Query {
+		Vec3 out_dir;
+		float index_of_refraction = 1.0f;
+		template<class A> void fields(A& a) { a(out_dir, index_of_refraction); }
+	};
+	struct Result {
+		Vec3 in_dir;
+		bool was_internal = false;
+		template<class A> void fields(A& a) { a(in_dir, was_internal); }
+	};
+	std::vector<Query> queries;
+	template<class A> void fields(A& a) { a(queries); }
+	using Answer = std::vector<Result>;
+};
+
+// fresnel(cos_theta, index_of_refraction) for each query.
+struct Fresnel {
+	static constexpr Kind KIND = Kind::fresnel;
+	struct Query {
+		float cos_theta = 1.0f, index_of_refraction = 1.0f;
+		template<class A> void fields(A& a) { a(cos_theta, index_of_refraction); }
+	};
+	std::vector<Query> queries;
+	template<class A> void fields(A& a) { a(queries); }
+	using Answer = std::vector<float>;
+};
+
+// ---- Task 6 ----
+
+// Pathtracer(scene, settings).sample_incoming(rng, hit, bsdf, out_dir) for each query, from one
+// generator.
+struct Sample_Incoming {
+	static constexpr Kind KIND = Kind::sample_incoming;
+	struct Query {
+		Trace hit;
+		BSDF bsdf;
+		Vec3 out_dir;
+		template<class A> void fields(A& a) { a(hit, bsdf, out_dir); }
+	};
+	Scene scene;
+	Render_Settings settings;
+	std::vector<Query> queries;
+	RNG_State rng;
+	template<class A> void fields(A& a) { a(scene, settings, queries, rng); }
+	using Answer = std::vector<Incoming_Sample>;
+};
+
+// ---- Task 7 ----
+
+// direction_to_uv(dir) for each direction.
+struct Direction_To_UV {
+	static constexpr Kind KIND = Kind::direction_to_uv;
+	std::vector<Vec3> dirs;
+	template<class A> void fields(A& a) { a(dirs); }
+	using Answer = std::vector<Vec2>;
+};
+
+// uv_to_direction(uv) for each point.
+struct UV_To_Direction {
+	static constexpr Kind KIND = Kind::uv_to_direction;
+	std::vector<Vec2> uvs;
+	template<class A> void fields(A& a) { a(uvs); }
+	using Answer = std::vector<Vec3>;
+};
+
+// What a sampler answers: sample(u) for each u, pdf(dir) for each dir.
+struct Sampler_Answer {
+	std::vector<Vec3> samples;
+	std::vector<float> pdfs;
+	template<class A> void fields(A& a) { a(samples, pdfs); }
+};
+
+// Samplers::Sphere::Uniform: sample(u) for each u and pdf(dir) for each dir.
+struct Uniform_Sphere {
+	static constexpr Kind KIND = Kind::uniform_sphere;
+	std::vector<Vec2> us;
+	std::vector<Vec3> dirs;
+	template<class A> void fields(A& a) { a(us, dirs); }
+	using Answer = Sampler_Answer;
+};
+
+// Samplers::Sphere::Image(image): its tables, then sample(u) for each u and pdf(dir) for each dir.
+struct Image_Sampler {
+	static constexpr Kind KIND = Kind::image_sampler;
+	HDR_Image image;
+	std::vector<Vec2> us;
+	std::vector<Vec3> dirs;
+	template<class A> void fields(A& a) { a(image, us, dirs); }
+	struct Answer {
+		uint32_t w = 0, h = 0;
+		std::vector<float> pdf_texel, cdf;
+		Sampler_Answer queries;
+		template<class A> void fields(A& a) { a(w, h, pdf_texel, cdf, queries); }
+	};
+};
+
+// Env_Map(image, importance_sampling): sample(u) for each u, pdf(dir) and evaluate(dir) for each
+// dir.
+struct Env_Map_Queries {
+	static constexpr Kind KIND = Kind::env_map;
+	HDR_Image image;
+	bool importance_sampling = true;
+	std::vector<Vec2> us;
+	std::vector<Vec3> dirs;
+	template<class A> void fields(A& a) { a(image, importance_sampling, us, dirs); }
+	struct Answer {
+		Sampler_Answer queries;
+		std::vector<Spectrum> radiance;
+		template<class A> void fields(A& a) { a(queries, radiance); }
+	};
+};
+
+} // namespace protocol

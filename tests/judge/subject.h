@@ -1,0 +1,63 @@
+#pragma once
+// The judge's side of the protocol (protocol.h): a subject process, started fresh (fork, then exec
+// of the subject program in the sandbox, sandbox.h), asked typed, batched requests.
+//
+// Anything that is not a well-formed answer in turn — a crash, an exit, a limit reached, bytes that
+// do not decode, an answer to another request — is a Subject_Failure, whose message says what
+// happened, during which request and which student functions, and what the code printed last.
+// The subject is then gone; the judge starts a fresh one for the next test case.
+#include "protocol.h"
+#include "sandbox.h"
+#include "wire.h"
+
+#include <chrono>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include <sys/types.h>
+
+struct Subject_Failure : std::runtime_error {
+	using std::runtime_error::runtime_error;
+};
+
+class Subject {
+public:
+	using Clock = std::chrono::steady_clock;
+
+	// Starts `program` in `sandbox`; `deadline`: when the test case's time is up. `save_requests`:
+	// a file to append every request to, for `subject --replay` (empty: none).
+	Subject(const std::string& program, const Sandbox& sandbox, Clock::time_point deadline,
+	        const std::string& save_requests = "");
+	~Subject();
+	Subject(const Subject&) = delete;
+	Subject& operator=(const Subject&) = delete;
+
+	template<class Request> typename Request::Answer ask(const Request& request) {
+		std::string answer = exchange(Request::KIND, wire::encode(request));
+		try {
+			return wire::decode<typename Request::Answer>(answer);
+		} catch (const wire::Malformed& problem) {
+			fail(Request::KIND, std::string("answered with bytes that are not an answer (") + problem.what() + ")");
+		}
+	}
+
+	// The end of what the subject printed (stdout and stderr), at most `lines` lines.
+	std::string printed(size_t lines = 15) const;
+
+private:
+	std::string exchange(protocol::Kind kind, const std::string& payload);
+	[[noreturn]] void fail(protocol::Kind kind, const std::string& what);
+	// Why the process ended (waits for it, killing it if it is still running).
+	std::string end_reason();
+	void stop();
+
+	const Sandbox& sandbox;
+	Clock::time_point deadline;
+	std::string save_requests;
+	pid_t pid = -1;
+	int to_subject = -1, from_subject = -1, log = -1;
+	uint32_t sequence = 0;
+	bool timed_out = false;
+	std::string timeout_kind; // "request" or "test case"
+};

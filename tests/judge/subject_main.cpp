@@ -1,0 +1,324 @@
+// The subject: the program that runs a student's code for the judge (protocol.h). It is linked
+// with the student's task N and the reference of the other six (cmake/lab.cmake) and started by
+// the judge inside the sandbox, one fresh process per test case. It reads a request, runs the task
+// functions on the request's inputs and writes back their raw outputs; it decides nothing.
+//
+// For debugging (./lab grade N --debug), `subject --replay FILE` answers the requests a judge
+// saved in FILE and discards the answers, so the student's code can be stepped through in gdb.
+#include "protocol.h"
+#include "wire.h"
+
+#include "render.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <string>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+namespace {
+
+using namespace protocol;
+
+// ---- The task functions, per request ----
+
+Generate_Rays::Answer answer(const Generate_Rays& request) {
+	Generate_Rays::Answer rays;
+	for (const auto& q : request.queries) rays.push_back(q.camera.generate_ray(q.film_uv));
+	return rays;
+}
+
+Trace_Pixels::Answer answer(const Trace_Pixels& request) {
+	Pathtracer pathtracer(request.scene, request.settings, request.view);
+	Trace_Pixels::Answer colours;
+	for (const auto& s : request.samples) {
+		RNG rng = RNG::restore(s.rng);
+		colours.push_back(pathtracer.trace_pixel(s.x, s.y, rng));
+	}
+	return colours;
+}
+
+Render::Answer answer(const Render& request) {
+	Pathtracer pathtracer(request.scene, request.settings, request.view);
+	Render_Options options;
+	options.threads = std::max(1u, request.threads);
+	return render(pathtracer, options);
+}
+
+Triangle_Hits::Answer answer(const Triangle_Hits& request) {
+	Triangle_Hits::Answer hits;
+	for (const auto& q : request.queries) hits.push_back(q.triangle.hit(q.ray));
+	return hits;
+}
+
+Sphere_Hits::Answer answer(const Sphere_Hits& request) {
+	Sphere_Hits::Answer hits;
+	for (const auto& q : request.queries) hits.push_back(q.sphere.hit(q.ray));
+	return hits;
+}
+
+BBox_Hits::Answer answer(const BBox_Hits& request) {
+	BBox_Hits::Answer results;
+	for (const auto& q : request.queries) {
+		BBox_Hits::Result result;
+		result.times = q.times;
+		result.hit = q.box.hit(q.ray, result.times);
+		results.push_back(result);
+	}
+	return results;
+}
+
+template<typename Primitive> Tree tree_of(const BVH<Primitive>& bvh) {
+	Tree tree;
+	for (const auto& n : bvh.nodes) tree.nodes.push_back(Tree::Node{n.bbox, n.start, n.size, n.l, n.r});
+	tree.root_idx = bvh.root_idx;
+	return tree;
+}
+
+BVH_Triangles::Answer answer(const BVH_Triangles& request) {
+	BVH<Triangle> bvh(std::vector<Triangle>(request.triangles), request.max_leaf_size);
+	BVH_Triangles::Answer result;
+	result.tree = tree_of(bvh);
+	result.primitives = bvh.primitives;
+	for (const Ray& ray : request.rays) result.hits.push_back(bvh.hit(ray));
+	return result;
+}
+
+BVH_Instances::Answer answer(const BVH_Instances& request) {
+	// The decoded scene was committed, which moved its objects into scene.bvh.
+	BVH<Instance> bvh(std::vector<Instance>(request.scene.bvh.primitives), request.max_leaf_size);
+	BVH_Instances::Answer result;
+	result.tree = tree_of(bvh);
+	for (const Instance& object : bvh.primitives) result.order.push_back(object.index);
+	for (const Ray& ray : request.rays) result.hits.push_back(bvh.hit(ray));
+	return result;
+}
+
+BSDF_Scatter::Answer answer(const BSDF_Scatter& request) {
+	RNG rng = RNG::restore(request.rng);
+	BSDF_Scatter::Answer samples;
+	for (Vec3 out_dir : request.out_dirs) samples.push_back(request.bsdf.scatter(rng, out_dir));
+	return samples;
+}
+
+BSDF_Evaluate::Answer answer(const BSDF_Evaluate& request) {
+	BSDF_Evaluate::Answer values;
+	for (const auto& p : request.pairs) values.push_back(request.bsdf.evaluate(p.out_dir, p.in_dir));
+	return values;
+}
+
+BSDF_Pdf::Answer answer(const BSDF_Pdf& request) {
+	BSDF_Pdf::Answer values;
+	for (const auto& p : request.pairs) values.push_back(request.bsdf.pdf(p.out_dir, p.in_dir));
+	return values;
+}
+
+Reflect::Answer answer(const Reflect& request) {
+	Reflect::Answer dirs;
+	for (Vec3 dir : request.dirs) dirs.push_back(reflect(dir));
+	return dirs;
+}
+
+Refract::Answer answer(const Refract& request) {
+	Refract::Answer results;
+	for (const auto& q : request.queries) {
+		Refract::Result result;
+		result.in_dir = refract(q.out_dir, q.index_of_refraction, result.was_internal);
+		results.push_back(result);
+	}
+	return results;
+}
+
+Fresnel::Answer answer(const Fresnel& request) {
+	Fresnel::Answer values;
+	for (const auto& q : request.queries) values.push_back(fresnel(q.cos_theta, q.index_of_refraction));
+	return values;
+}
+
+Sample_Incoming::Answer answer(const Sample_Incoming& request) {
+	Pathtracer pathtracer(request.scene, request.settings);
+	RNG rng = RNG::restore(request.rng);
+	Sample_Incoming::Answer samples;
+	for (const auto& q : request.queries) samples.push_back(pathtracer.sample_incoming(rng, q.hit, q.bsdf, q.out_dir));
+	return samples;
+}
+
+Direction_To_UV::Answer answer(const Direction_To_UV& request) {
+	Direction_To_UV::Answer uvs;
+	for (Vec3 dir : request.dirs) uvs.push_back(direction_to_uv(dir));
+	return uvs;
+}
+
+UV_To_Direction::Answer answer(const UV_To_Direction& request) {
+	UV_To_Direction::Answer dirs;
+	for (Vec2 uv : request.uvs) dirs.push_back(uv_to_direction(uv));
+	return dirs;
+}
+
+template<class Sampler> Sampler_Answer ask_sampler(const Sampler& sampler, const std::vector<Vec2>& us,
+                                                   const std::vector<Vec3>& dirs) {
+	Sampler_Answer result;
+	for (Vec2 u : us) result.samples.push_back(sampler.sample(u));
+	for (Vec3 dir : dirs) result.pdfs.push_back(sampler.pdf(dir));
+	return result;
+}
+
+Uniform_Sphere::Answer answer(const Uniform_Sphere& request) {
+	return ask_sampler(Samplers::Sphere::Uniform{}, request.us, request.dirs);
+}
+
+Image_Sampler::Answer answer(const Image_Sampler& request) {
+	Samplers::Sphere::Image sampler(request.image);
+	Image_Sampler::Answer result;
+	result.w = sampler.w;
+	result.h = sampler.h;
+	result.pdf_texel = sampler.pdf_texel;
+	result.cdf = sampler.cdf;
+	result.queries = ask_sampler(sampler, request.us, request.dirs);
+	return result;
+}
+
+Env_Map_Queries::Answer answer(const Env_Map_Queries& request) {
+	Env_Map map(request.image, request.importance_sampling);
+	Env_Map_Queries::Answer result;
+	result.queries = ask_sampler(map, request.us, request.dirs);
+	for (Vec3 dir : request.dirs) result.radiance.push_back(map.evaluate(dir));
+	return result;
+}
+
+template<class Request> std::string serve(const std::string& payload) {
+	return wire::encode(answer(wire::decode<Request>(payload)));
+}
+
+std::string serve(Kind kind, const std::string& payload) {
+	switch (kind) {
+	case Kind::generate_rays: return serve<Generate_Rays>(payload);
+	case Kind::trace_pixels: return serve<Trace_Pixels>(payload);
+	case Kind::render: return serve<Render>(payload);
+	case Kind::triangle_hits: return serve<Triangle_Hits>(payload);
+	case Kind::sphere_hits: return serve<Sphere_Hits>(payload);
+	case Kind::bbox_hits: return serve<BBox_Hits>(payload);
+	case Kind::bvh_triangles: return serve<BVH_Triangles>(payload);
+	case Kind::bvh_instances: return serve<BVH_Instances>(payload);
+	case Kind::bsdf_scatter: return serve<BSDF_Scatter>(payload);
+	case Kind::bsdf_evaluate: return serve<BSDF_Evaluate>(payload);
+	case Kind::bsdf_pdf: return serve<BSDF_Pdf>(payload);
+	case Kind::reflect: return serve<Reflect>(payload);
+	case Kind::refract: return serve<Refract>(payload);
+	case Kind::fresnel: return serve<Fresnel>(payload);
+	case Kind::sample_incoming: return serve<Sample_Incoming>(payload);
+	case Kind::direction_to_uv: return serve<Direction_To_UV>(payload);
+	case Kind::uv_to_direction: return serve<UV_To_Direction>(payload);
+	case Kind::uniform_sphere: return serve<Uniform_Sphere>(payload);
+	case Kind::image_sampler: return serve<Image_Sampler>(payload);
+	case Kind::env_map: return serve<Env_Map_Queries>(payload);
+	}
+	throw wire::Malformed("unknown request kind " + std::to_string(uint32_t(kind)));
+}
+
+// ---- Transport ----
+
+bool read_all(int fd, void* data, size_t size) {
+	char* p = static_cast<char*>(data);
+	while (size > 0) {
+		ssize_t n = read(fd, p, size);
+		if (n < 0 && errno == EINTR) continue;
+		if (n <= 0) return false;
+		p += n;
+		size -= size_t(n);
+	}
+	return true;
+}
+
+void write_all(int fd, const void* data, size_t size) {
+	const char* p = static_cast<const char*>(data);
+	while (size > 0) {
+		ssize_t n = write(fd, p, size);
+		if (n < 0 && errno == EINTR) continue;
+		if (n <= 0) _exit(3); // the judge is gone
+		p += n;
+		size -= size_t(n);
+	}
+}
+
+struct Request_Header {
+	uint32_t magic, kind, sequence;
+	uint64_t length;
+};
+
+// Reads one request; false at the end of the input.
+bool read_request(int fd, Request_Header& header, std::string& payload) {
+	if (!read_all(fd, &header.magic, 4) || !read_all(fd, &header.kind, 4) || !read_all(fd, &header.sequence, 4) ||
+	    !read_all(fd, &header.length, 8)) {
+		return false;
+	}
+	if (header.magic != MAGIC || header.length > MAX_PAYLOAD) {
+		std::fprintf(stderr, "subject: not a judge's request\n");
+		_exit(2);
+	}
+	payload.resize(header.length);
+	return read_all(fd, payload.data(), payload.size());
+}
+
+void write_answer(const Request_Header& request, Status status, const std::string& payload) {
+	std::string message;
+	auto append = [&](const auto& value) { message.append(reinterpret_cast<const char*>(&value), sizeof value); };
+	append(MAGIC);
+	append(request.kind);
+	append(request.sequence);
+	append(uint32_t(status));
+	append(uint64_t(payload.size()));
+	message += payload;
+	write_all(ANSWER_FD, message.data(), message.size());
+}
+
+int serve_judge() {
+	Request_Header header;
+	std::string payload;
+	while (read_request(REQUEST_FD, header, payload)) {
+		std::string answer;
+		Status status = Status::OK;
+		try {
+			answer = serve(Kind(header.kind), payload);
+		} catch (const std::exception& error) {
+			status = Status::THREW;
+			answer = error.what();
+		}
+		write_answer(header, status, answer);
+	}
+	return 0;
+}
+
+// Answers every request saved in `file` (the judge's --save-requests), printing what it runs.
+int replay(const char* file) {
+	int fd = open(file, O_RDONLY);
+	if (fd < 0) {
+		std::fprintf(stderr, "subject: cannot open %s: %s\n", file, std::strerror(errno));
+		return 2;
+	}
+	Request_Header header;
+	std::string payload;
+	while (read_request(fd, header, payload)) {
+		std::fprintf(stderr, "subject: request %u, %s (%s)\n", header.sequence, kind_name(Kind(header.kind)),
+		             kind_functions(Kind(header.kind)));
+		serve(Kind(header.kind), payload);
+	}
+	std::fprintf(stderr, "subject: every request answered\n");
+	return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+	if (argc == 3 && std::string(argv[1]) == "--replay") return replay(argv[2]);
+	if (argc != 1) {
+		std::fprintf(stderr, "usage: %s            (started by a judge, see tests/judge/protocol.h)\n"
+		                     "       %s --replay FILE (answer the requests a judge saved, for a debugger)\n",
+		             argv[0], argv[0]);
+		return 2;
+	}
+	return serve_judge();
+}

@@ -1,0 +1,141 @@
+#pragma once
+// The byte encoding of the protocol's messages (protocol.h): a Writer appends values to a byte
+// string, a Reader takes them back and throws Malformed on anything that is not a well-formed
+// value (a count larger than the bytes left, a bool that is neither 0 nor 1, an unknown tag).
+// Structs of the protocol list their members once, in fields(); framework types are encoded here.
+#include "protocol.h"
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace wire {
+
+struct Malformed : std::runtime_error {
+	using std::runtime_error::runtime_error;
+};
+
+class Writer {
+public:
+	template<class... T> void operator()(const T&... values) {
+		(put(values), ...);
+	}
+	std::string bytes;
+
+private:
+	void raw(const void* data, size_t size);
+	void put(bool b);
+	void put(uint32_t n);
+	void put(uint64_t n);
+	void put(float x);
+	void put(double x);
+	void put(Vec2 v);
+	void put(Vec3 v);
+	void put(const glm::dvec3& v);
+	void put(const Mat4& m);
+	void put(const std::string& s);
+	void put(View view);
+	void put(const RNG::State& rng);
+	void put(const Camera& camera);
+	void put(const Render_Settings& settings);
+	void put(const Ray& ray);
+	void put(const Trace& trace);
+	void put(const Tri_Mesh_Vert& vertex);
+	void put(const Triangle& triangle);
+	void put(const Sphere& sphere);
+	void put(const BBox& box);
+	void put(const BSDF& bsdf);
+	void put(const Material& material);
+	void put(const Scatter& scatter);
+	void put(const Incoming_Sample& sample);
+	void put(const HDR_Image& image);
+	void put(const Pixel_Stats& pixel);
+	void put(const Film& film);
+	void put(const Instance& object);
+	void put(const Scene& scene);
+	template<class T> void put(const std::vector<T>& items) {
+		put(uint64_t(items.size()));
+		for (const T& item : items) put(item);
+	}
+	// A protocol struct: its fields() only read the members when writing.
+	template<class T> auto put(const T& value) -> decltype(const_cast<T&>(value).fields(*this)) {
+		const_cast<T&>(value).fields(*this);
+	}
+};
+
+class Reader {
+public:
+	explicit Reader(const std::string& bytes) : bytes(bytes) {
+	}
+	template<class... T> void operator()(T&... values) {
+		(get(values), ...);
+	}
+	// Throws Malformed unless every byte was read.
+	void expect_end() const;
+
+private:
+	void raw(void* data, size_t size);
+	// A count of items each at least `item_bytes` long that the bytes left can hold.
+	size_t count(size_t item_bytes);
+	void get(bool& b);
+	void get(uint32_t& n);
+	void get(uint64_t& n);
+	void get(float& x);
+	void get(double& x);
+	void get(Vec2& v);
+	void get(Vec3& v);
+	void get(glm::dvec3& v);
+	void get(Mat4& m);
+	void get(std::string& s);
+	void get(View& view);
+	void get(RNG::State& rng);
+	void get(Camera& camera);
+	void get(Render_Settings& settings);
+	void get(Ray& ray);
+	void get(Trace& trace);
+	void get(Tri_Mesh_Vert& vertex);
+	void get(Triangle& triangle);
+	void get(Sphere& sphere);
+	void get(BBox& box);
+	void get(BSDF& bsdf);
+	void get(Material& material);
+	void get(Scatter& scatter);
+	void get(Incoming_Sample& sample);
+	void get(HDR_Image& image);
+	void get(Pixel_Stats& pixel);
+	void get(Film& film);
+	void get(Scene& scene);
+	template<class T> void get(std::vector<T>& items) {
+		items.resize(count(1));
+		for (T& item : items) get(item);
+	}
+	template<class T> auto get(T& value) -> decltype(value.fields(*this)) {
+		value.fields(*this);
+	}
+
+	const std::string& bytes;
+	size_t at = 0;
+};
+
+template<class T> std::string encode(const T& value) {
+	Writer writer;
+	writer(value);
+	return std::move(writer.bytes);
+}
+
+template<class T> T empty_value() {
+	return T{};
+}
+template<> inline Film empty_value<Film>() {
+	return Film(0, 0);
+}
+
+template<class T> T decode(const std::string& bytes) {
+	T value = empty_value<T>();
+	Reader reader(bytes);
+	reader(value);
+	reader.expect_end();
+	return value;
+}
+
+} // namespace wire

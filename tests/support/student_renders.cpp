@@ -1,0 +1,45 @@
+#include "student_renders.h"
+
+#include "graded_images.h"
+#include "image_io.h"
+#include "judge.h"
+#include "report_record.h"
+#include "z_heat_map.h"
+
+#include <catch2/catch.hpp>
+
+namespace {
+
+// The grade report's picture of a reference-image test: the render and the reference as `./lab
+// render` shows them (exposure 0), and where they differ; written as <task>_<scene>_*.png.
+void report_images(const std::string& name, const Reference_Check& check) {
+	const Image_Comparison& c = check.comparison;
+	std::string prefix = report::task_name() + "_" + name;
+	std::string render = prefix + "_render.png", reference = prefix + "_reference.png", z_map = prefix + "_z.png";
+	write_png(report::file(render), check.render.mean);
+	write_png(report::file(reference), check.reference.mean);
+	write_png(report::file(z_map), z_heat_map(z_scores(check.render, check.reference), c.z_critical));
+	report::attach({{"type", "image_test"}, {"scene", graded_scene_file(name)}, {"render", render},
+	                {"reference", reference}, {"z_map", z_map}, {"pass", c.pass && check.non_finite == 0},
+	                {"message", c.message}, {"non_finite", check.non_finite}, {"failed", c.failed},
+	                {"tests", c.tests}, {"z_critical", c.z_critical}, {"rel_mse", c.rel_mse}});
+}
+
+} // namespace
+
+void check_renders_like_reference(const std::string& name, const std::string& hint) {
+	const Graded_Scene& graded = graded_scene(name);
+	Scene scene = load_graded(graded);
+	Render_Settings settings = scene.settings;
+	if (judge::secret_seed()) {
+		RNG rng = judge::case_generator("render " + name);
+		settings.seed = uint64_t(rng.integer()) << 32 | rng.integer();
+	}
+	Film film = judge::ask(protocol::Render{scene, settings, graded.view, 2});
+	Reference_Check check = compare_with_reference(graded, film, settings);
+	if (report::enabled()) report_images(name, check);
+	INFO("scenes/graded/" << name << ".json: " << check.comparison.message);
+	INFO(hint);
+	CHECK(check.non_finite == 0);
+	CHECK(check.comparison.pass);
+}

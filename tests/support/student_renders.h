@@ -1,0 +1,11 @@
+#pragma once
+// Reference-image tests of a grader: the student's code renders a graded scene (in the subject,
+// tests/judge/), and the judge compares the film with the stored reference (graded_images.h).
+#include <string>
+
+// The grader's reference-image check as Catch2 checks: renders the graded scene `name` with the task
+// under test, compares it with the stored reference, and on failure shows where the image differs
+// and `hint` (what to look at, in the handout's terms). For the grade report (report_record.h) it also
+// writes the render, the reference and a heat map of the z-scores (z_heat_map.h) as PNGs and
+// attaches them to the test case. With a grading seed the render uses a seed drawn from it.
+void check_renders_like_reference(const std::string& name, const std::string& hint);
