@@ -1,12 +1,15 @@
 // `./lab references`: renders every graded scene (scenes/graded/) with the reference implementation
 // at REFERENCE_SPP_FACTOR times the graders' samples and writes scenes/graded/references/. For
 // instructors; run it after changing a graded scene, then run `./lab test` (label images).
-// Arguments: the names of the scenes to redo (default: all). Run from the repository root.
+// Arguments: the names of the scenes to redo (default: all), or --checksums to only record the
+// checksums of the files as they are. Either way it ends by recording the SHA-256 of every graded
+// scene and reference file (graded_images.h), which the graders verify. Run from the repository root.
 #include "graded_images.h"
 #include "terminal.h"
 
 #include <chrono>
 #include <iostream>
+#include <string>
 
 namespace {
 void make_reference(const Graded_Scene& scene) {
@@ -34,10 +37,13 @@ void make_reference(const Graded_Scene& scene) {
 
 int main(int argc, char** argv) {
 	try {
+		bool checksums_only = argc == 2 && std::string(argv[1]) == "--checksums";
 		if (argc == 1) {
 			for (const Graded_Scene& scene : graded_scenes()) make_reference(scene);
 		}
-		for (int i = 1; i < argc; i++) make_reference(graded_scene(argv[i]));
+		for (int i = 1; i < argc && !checksums_only; i++) make_reference(graded_scene(argv[i]));
+		record_checksums();
+		std::cerr << "recorded the checksums in scenes/graded/references/SHA256SUMS\n";
 	} catch (const std::exception& e) {
 		std::cerr << "make_references: " << e.what() << "\n";
 		return 1;

@@ -232,13 +232,17 @@ std::string Subject::exchange(Kind kind, const std::string& payload) {
 
 void Subject::fail(Kind kind, const std::string& what) {
 	std::string reason = end_reason();
+	std::string output = printed();
+	bool sanitizer = output.find("Sanitizer") != std::string::npos || output.find("runtime error:") != std::string::npos;
+	if (sanitizer) reason = "the sanitizer stopped it at an error in the code (its report ends below)";
 	std::string message = std::string("your code (") + protocol::kind_functions(kind) + ", request " +
 	                      protocol::kind_name(kind) + ") " + what + ": " + reason + ".";
-	std::string output = printed();
 	if (!output.empty()) message += "\nThe last lines your code printed:\n" + output;
 	if (!save_requests.empty()) {
 		message += "\nTo step through it in a debugger: gdb --args <the subject program> --replay " + save_requests +
 		           " (./lab grade N --debug prints the command)";
+	} else if (!sanitizer && reason.find("killed by") != std::string::npos) {
+		message += "\n./lab grade N --debug runs it with sanitizers, which name the file and line of the crash";
 	}
 	throw Subject_Failure(message);
 }

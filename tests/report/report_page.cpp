@@ -179,6 +179,15 @@ void task_section(std::ostream& out, const Task_Result& t) {
 		out << " Full output: <a href=\"" << escape(t.log_file) << "\">" << escape(t.log_file) << "</a>.";
 	}
 	out << "</p>\n";
+	if (!t.sandbox.empty()) {
+		out << "<p class=\"where\">How your code ran: " << escape(t.sandbox) << "; inputs: " << escape(t.inputs)
+		    << ".</p>\n";
+	}
+	if (!t.not_run.empty()) {
+		out << "<p>Test cases that did not run:</p>\n<ul>\n";
+		for (const std::string& name : t.not_run) out << "<li>" << escape(name) << "</li>\n";
+		out << "</ul>\n";
+	}
 	if (!t.log_tail.empty()) out << "<pre>" << escape(t.log_tail) << "</pre>\n";
 	// The pictures first, then the other failed test cases; passed ones are only listed.
 	std::vector<const Test_Case*> quiet;

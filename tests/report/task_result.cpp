@@ -143,6 +143,9 @@ void judge(Task_Result& result, int exit_status, const Json& record) {
 		result.why = "The grader stopped before its summary (" + how + ")" + in + "." + look;
 	} else if (result.test_cases.empty()) {
 		result.why = "The grader ran no test case." + look;
+	} else if (!result.not_run.empty()) {
+		result.why = std::to_string(result.not_run.size()) + " of the grader's test cases did not run (\"" +
+		             result.not_run.front() + "\" first): a task passes only when every test case ran and passed." + look;
 	} else if (failed > 0) {
 		result.status = Status::fail;
 		result.why = std::to_string(failed) + " of " + std::to_string(result.test_cases.size()) +
@@ -188,6 +191,14 @@ Task_Result read_task_result(const fs::path& dir, const Task_Info& task) {
 	if (record.contains("running") && record["running"].is_object()) {
 		result.running = record["running"].value("name", "");
 	}
+	result.sandbox = record.value("sandbox", "");
+	result.inputs = record.value("inputs", "");
+	for (const std::string& name : record.value("expected_test_cases", std::vector<std::string>{})) {
+		bool ran = std::any_of(result.test_cases.begin(), result.test_cases.end(),
+		                       [&](const Test_Case& c) { return c.name == name; });
+		if (!ran) result.not_run.push_back(name);
+	}
+	if (!record.contains("expected_test_cases")) result.not_run.push_back("(the judge recorded no list of test cases)");
 	result.log_file = name + ".log";
 	judge(result, exit_status, record);
 	if (result.status == Status::crashed) result.log_tail = last_lines(dir / result.log_file, LOG_TAIL_LINES);

@@ -3,6 +3,7 @@
 #include "error.h"
 #include "image_io.h"
 #include "scene_loader.h"
+#include "sha256.h"
 
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -34,7 +35,42 @@ std::string reference_file(const std::string& name, const std::string& suffix) {
 }
 
 Scene load_graded(const Graded_Scene& graded) {
+	verify_checksum(graded_scene_file(graded.name));
 	return load_scene(graded_scene_file(graded.name));
+}
+
+namespace {
+
+// The files whose checksums ./lab references records: every graded scene and its references.
+std::vector<std::string> checked_files() {
+	std::vector<std::string> files;
+	for (const Graded_Scene& scene : graded_scenes()) {
+		files.push_back(graded_scene_file(scene.name));
+		for (const char* suffix : {".json", "_mean.exr", "_var.exr"}) files.push_back(reference_file(scene.name, suffix));
+	}
+	return files;
+}
+
+} // namespace
+
+void record_checksums() {
+	std::string text;
+	for (const std::string& file : checked_files()) text += sha256_of_file(file) + "  " + file + "\n";
+	std::ofstream(GRADED_CHECKSUMS) << text;
+}
+
+void verify_checksum(const std::string& file, const std::string& checksums) {
+	std::ifstream in(checksums);
+	if (!in) throw Input_Error(checksums + ": missing; run `./lab references` to record the checksums");
+	std::string sum, name;
+	while (in >> sum >> name) {
+		if (name != file) continue;
+		if (sha256_of_file(file) == sum) return;
+		throw Input_Error(file + ": its contents differ from what `./lab references` recorded in " + checksums +
+		                  " (checksum mismatch): restore it (git checkout) or, if the change is deliberate, run "
+		                  "`./lab references`");
+	}
+	throw Input_Error(file + ": has no checksum in " + checksums + "; run `./lab references`");
 }
 
 Film render_graded(const Graded_Scene& graded, const Scene& scene, uint32_t samples, uint64_t seed,
@@ -48,6 +84,7 @@ Film render_graded(const Graded_Scene& graded, const Scene& scene, uint32_t samp
 
 Image_Estimate read_reference(const Graded_Scene& scene, const Render_Settings& grader) {
 	std::string record_file = reference_file(scene.name, ".json");
+	for (const char* suffix : {".json", "_mean.exr", "_var.exr"}) verify_checksum(reference_file(scene.name, suffix));
 	std::ifstream in(record_file);
 	if (!in) throw Input_Error(record_file + ": missing; run `./lab references` to make the reference images");
 	nlohmann::json record = nlohmann::json::parse(in);

@@ -27,15 +27,22 @@ constexpr uint64_t REFERENCE_SEED = 1000003; // different from every grader and 
 std::string graded_scene_file(const std::string& name);
 std::string reference_file(const std::string& name, const std::string& suffix); // "_mean.exr", ".json"
 
-// The scene; its settings are the graders' (the file's "film").
+// Checksums: `./lab references` records the SHA-256 of every graded scene and reference file in
+// scenes/graded/references/SHA256SUMS; reading one that differs (or has none) is an Input_Error,
+// never a pass.
+inline const std::string GRADED_CHECKSUMS = "scenes/graded/references/SHA256SUMS";
+void record_checksums();
+void verify_checksum(const std::string& file, const std::string& checksums = GRADED_CHECKSUMS);
+
+// The scene (its checksum verified); its settings are the graders' (the file's "film").
 Scene load_graded(const Graded_Scene& graded);
 
 // Renders a graded scene with its own size and depth, and the given samples and seed.
 Film render_graded(const Graded_Scene& graded, const Scene& scene, uint32_t samples, uint64_t seed,
                    const Render_Options& options = Render_Options{});
 
-// The stored reference; throws with the file name if it is missing or was made with another size,
-// depth or view than `grader` (the scene's settings) has.
+// The stored reference; throws with the file name if it is missing, differs from its checksum, or
+// was made with another size, depth or view than `grader` (the scene's settings) has.
 Image_Estimate read_reference(const Graded_Scene& graded, const Render_Settings& grader);
 void write_reference(const Graded_Scene& graded, const Film& film, const Render_Settings& settings);
 

@@ -1,5 +1,6 @@
-// The grade report's Catch2 listener (`./lab report`, tests/report/). When LAB_REPORT_DIR is set,
-// a grader writes <dir>/task<N>.json (report_record.h): per test case whether it passed and, for
+// The grade report's Catch2 listener (`./lab report`, tests/report/), in the judge (tests/judge/):
+// only the judge writes the report's records. When LAB_REPORT_DIR is set, a grader writes
+// <dir>/task<N>.json (report_record.h): per test case whether it passed and, for
 // each failed check, where it is, what it checked and its messages (the INFO/CAPTURE text that
 // tells the student what is wrong and where to look), and what checks attached (the images of a
 // reference-image test). The file is rewritten after every test case, so a grader that crashes or
@@ -7,6 +8,7 @@
 //
 // Linked into every grader as an object (tests/CMakeLists.txt): from a static library the linker
 // would drop it, since nothing calls it.
+#include "judge.h"
 #include "report_record.h"
 
 #define CATCH_CONFIG_EXTERNAL_INTERFACES // the reporter and listener types
@@ -59,6 +61,10 @@ public:
 	void testRunStarting(const Catch::TestRunInfo& info) override {
 		TestEventListenerBase::testRunStarting(info);
 		grader = info.name;
+		// Every test case the judge has, whatever this run selected: a task passes only when each ran.
+		for (const Catch::TestCase& test_case : Catch::getAllTestCasesSorted(*m_config)) {
+			expected.push_back(test_case.name);
+		}
 		write(false);
 	}
 
@@ -103,7 +109,9 @@ private:
 	void write(bool finished) const {
 		if (!report::enabled()) return;
 		Json record{{"grader", grader}, {"finished", finished}, {"fatal_error", fatal_error},
-		            {"running", running}, {"test_cases", test_cases}};
+		            {"sandbox", judge::sandbox().notice()},
+		            {"inputs", judge::secret_seed() ? "drawn from the grading seed" : "the public test cases"},
+		            {"expected_test_cases", expected}, {"running", running}, {"test_cases", test_cases}};
 		std::string path = report::file(report::task_name() + ".json");
 		std::filesystem::create_directories(report::directory());
 		// Messages may quote any bytes a student's code produced: invalid UTF-8 is replaced, not thrown.
@@ -114,6 +122,7 @@ private:
 	std::string grader;
 	Json running; // the test case in progress, null between test cases
 	Json test_cases = Json::array();
+	Json expected = Json::array(); // the names of all the judge's test cases
 	Json fatal_error; // the signal's name if the grader crashed, else null
 };
 
