@@ -1,7 +1,8 @@
 # Shared settings for every target of the lab, applied per target (no global flags).
 add_library(lab_options INTERFACE)
 target_compile_features(lab_options INTERFACE cxx_std_17)
-target_compile_options(lab_options INTERFACE -Wall -Wextra -Wpedantic -Wno-unused-parameter)
+set(LAB_WARNINGS -Wall -Wextra -Wpedantic -Wno-unused-parameter)
+target_compile_options(lab_options INTERFACE ${LAB_WARNINGS})
 
 function(lab_defaults target)
 	target_link_libraries(${target} PRIVATE lab_options)

@@ -2,6 +2,7 @@
 // through the student's BVH. A BVH changes only the speed, never the picture, so the image must match
 // the reference (tests/support/image_compare.h), and the bunny's BVH must be a real hierarchy: the
 // starter code's single leaf is correct, but it is not the task.
+#include "graded_images.h"
 #include "student_renders.h"
 #include "scene_loader.h"
 #include "tri_mesh.h"
