@@ -1,7 +1,7 @@
 // The judge's program: Catch2's runner with the judge's options, and the per-test-case subject.
 //
 //   judge_taskN --subject PROGRAM [--seed S | --seed @FILE] [--sandbox auto|bubblewrap|none]
-//               [--save-requests DIR] [Catch2 options]
+//               [--time-limit SECONDS] [--save-requests DIR] [Catch2 options]
 #define CATCH_CONFIG_RUNNER
 #define CATCH_CONFIG_EXTERNAL_INTERFACES
 #include <catch2/catch.hpp>
@@ -108,11 +108,13 @@ int main(int argc, char** argv) {
 	Catch::Session session;
 	Judge_State& s = state();
 	std::string sandbox_mode = "auto", seed_text;
+	double time_limit = 0.0;
 	using Catch::clara::Opt;
 	session.cli(session.cli() |
 	            Opt(s.program, "program")["--subject"]("the subject program that runs the code under test") |
 	            Opt(seed_text, "seed|@file")["--seed"]("an instructor's secret grading seed, or a file holding it") |
 	            Opt(sandbox_mode, "auto|bubblewrap|none")["--sandbox"]("how the subject runs (default auto)") |
+	            Opt(time_limit, "seconds")["--time-limit"]("wall time per request (default 30; 3 times that per test case)") |
 	            Opt(s.save_dir, "folder")["--save-requests"]("save failed test cases' requests for --replay"));
 	if (int status = session.applyCommandLine(argc, argv)) return status;
 	if (session.configData().listTests || session.configData().listTestNamesOnly || session.configData().showHelp) {
@@ -126,6 +128,11 @@ int main(int argc, char** argv) {
 		s.program = std::filesystem::absolute(s.program).string();
 		s.secret_seed = parse_seed(seed_text);
 		s.sandbox = Sandbox::choose(sandbox_mode);
+		if (time_limit < 0.0) throw std::invalid_argument("--time-limit must be positive");
+		if (time_limit > 0.0) {
+			s.sandbox->limits().request_seconds = time_limit;
+			s.sandbox->limits().test_case_seconds = 3.0 * time_limit;
+		}
 		if (!s.save_dir.empty()) std::filesystem::create_directories(s.save_dir);
 	} catch (const std::exception& problem) {
 		std::cerr << "judge: " << problem.what() << "\n";

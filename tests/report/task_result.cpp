@@ -54,14 +54,15 @@ std::string last_lines(const fs::path& file, size_t count) {
 	return text;
 }
 
-// `count` lines of a build log from its first error (the one to fix first), or its last lines.
+// `count` lines of a build log from its first error (the one to fix first; a linker's error names an
+// undefined reference first), or its last lines.
 std::string lines_from_first_error(const fs::path& file, size_t count) {
 	std::ifstream in(file);
 	std::vector<std::string> lines;
 	for (std::string line; std::getline(in, line);) lines.push_back(line);
 	size_t first = lines.size() - std::min(count, lines.size());
 	for (size_t i = 0; i < lines.size(); i++) {
-		if (lines[i].find("error") != std::string::npos) {
+		if (lines[i].find("error") != std::string::npos || lines[i].find("undefined reference") != std::string::npos) {
 			first = i;
 			break;
 		}

@@ -78,6 +78,11 @@ Vec3 place(RNG& rng, Vec3 public_point, float r) {
 	return r * (2.0f * Vec3(rng.unit(), rng.unit(), rng.unit()) - 1.0f);
 }
 
+// A field of view in degrees, public or drawn from the grading seed.
+float fov(RNG& rng, float public_fov) {
+	return judge::secret_seed() ? 15.0f + 125.0f * rng.unit() : public_fov;
+}
+
 } // namespace
 
 TEST_CASE("generate_ray: the centre of the film looks straight ahead, down -z in camera space") {
@@ -139,7 +144,7 @@ TEST_CASE("generate_ray: film (0, 0) is up and to the left as seen by the camera
 	RNG rng = judge::case_generator("up and left");
 	Vec3 position = place(rng, {1.0f, 2.0f, 3.0f}, 5.0f), target = place(rng, {-2.0f, 0.5f, -1.0f}, 5.0f);
 	Vec3 world_up{0.0f, 1.0f, 0.0f};
-	Camera camera = Camera::look_at(position, target, world_up, 50.0f, 1.5f);
+	Camera camera = Camera::look_at(position, target, world_up, fov(rng, 50.0f), 1.5f);
 	DVec3 forward = glm::normalize(DVec3(target - position));
 	DVec3 right = glm::normalize(glm::cross(forward, DVec3(world_up)));
 	DVec3 up = glm::cross(right, forward);
@@ -168,7 +173,9 @@ TEST_CASE("generate_ray: film (0, 0) is up and to the left as seen by the camera
 }
 
 TEST_CASE("generate_ray: directions are unit length and dist_bounds is [0, inf)") {
-	Camera camera = Camera::look_at(Vec3{0.0f, 1.0f, 4.0f}, Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f}, 70.0f, 16.0f / 9.0f);
+	RNG cases = judge::case_generator("unit length");
+	Camera camera = Camera::look_at(place(cases, Vec3{0.0f, 1.0f, 4.0f}, 5.0f), Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f},
+	                                fov(cases, 70.0f), 16.0f / 9.0f);
 	RNG rng(judge::secret_seed().value_or(11));
 	std::vector<Generate_Rays::Query> queries;
 	for (int i = 0; i < 1000; i++) queries.push_back({camera, rng.unit2()});
@@ -189,7 +196,7 @@ TEST_CASE("generate_ray: camera_to_world moves the origin to the camera and rota
 	RNG rng = judge::case_generator("camera_to_world");
 	SECTION("a camera made by look_at looks at its target") {
 		Vec3 position = place(rng, {3.0f, -2.0f, 5.0f}, 6.0f), target = place(rng, {0.0f, 1.0f, -1.0f}, 6.0f);
-		Camera camera = Camera::look_at(position, target, Vec3{0.0f, 1.0f, 0.0f}, 40.0f, 1.25f);
+		Camera camera = Camera::look_at(position, target, Vec3{0.0f, 1.0f, 0.0f}, fov(rng, 40.0f), 1.25f);
 		std::vector<Generate_Rays::Query> queries{{camera, Vec2{0.5f, 0.5f}}};
 		for (DVec2 uv : {DVec2{0.0, 0.0}, DVec2{1.0, 0.25}, DVec2{0.3, 1.0}, DVec2{0.75, 0.6}}) {
 			queries.push_back({camera, Vec2(uv)});
@@ -208,7 +215,7 @@ TEST_CASE("generate_ray: camera_to_world moves the origin to the camera and rota
 		}
 	}
 	SECTION("a camera_to_world matrix set directly (rotation and translation)") {
-		Camera camera = camera_at_origin(65.0f, 0.8f);
+		Camera camera = camera_at_origin(fov(rng, 65.0f), 0.8f);
 		Vec3 axis = judge::secret_seed() ? place(rng, {}, 1.0f) + Vec3{0.0f, 0.0f, 1.5f} : Vec3{1.0f, -2.0f, 0.5f};
 		float angle = judge::secret_seed() ? 6.0f * rng.unit() : 2.0f;
 		Mat4 rotation = glm::rotate(Mat4{1.0f}, angle, glm::normalize(axis));

@@ -19,7 +19,13 @@ using protocol::Trace_Pixels;
 namespace {
 
 constexpr uint32_t WIDTH = 64, HEIGHT = 48;
-constexpr uint64_t SEED = 20240917;
+
+// The render seed: public, or drawn from the grading seed.
+uint64_t render_seed() {
+	if (!judge::secret_seed()) return 20240917;
+	RNG rng = judge::case_generator("trace_pixel seed");
+	return uint64_t(rng.integer()) << 32 | rng.integer();
+}
 
 // The statistical tests of this file share alpha = 0.01 (Šidák): for each of the three pixels
 // below, one chi-square test and two z-tests of the mean offset.
@@ -33,8 +39,14 @@ constexpr double PIXEL_TOLERANCE = 1e-3;
 
 Scene direction_scene() {
 	Scene scene;
-	scene.camera = Camera::look_at(Vec3{1.0f, 2.0f, 3.0f}, Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f}, 50.0f,
-	                               float(WIDTH) / float(HEIGHT));
+	Vec3 position{1.0f, 2.0f, 3.0f};
+	float v_fov = 50.0f;
+	if (judge::secret_seed()) {
+		RNG rng = judge::case_generator("trace_pixel camera");
+		position = 5.0f * (Vec3(rng.unit(), rng.unit(), rng.unit()) + 0.2f);
+		v_fov = 20.0f + 100.0f * rng.unit();
+	}
+	scene.camera = Camera::look_at(position, Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f}, v_fov, float(WIDTH) / float(HEIGHT));
 	scene.settings.width = WIDTH;
 	scene.settings.height = HEIGHT;
 	return scene;
@@ -44,7 +56,7 @@ Render_Settings film_settings() {
 	Render_Settings settings;
 	settings.width = WIDTH;
 	settings.height = HEIGHT;
-	settings.seed = SEED;
+	settings.seed = render_seed();
 	return settings;
 }
 
@@ -60,9 +72,10 @@ using Pixel = std::pair<uint32_t, uint32_t>;
 // the student's trace_pixel in one request.
 std::vector<std::vector<Sample>> sample_pixels(const Scene& scene, const std::vector<Pixel>& pixels, uint32_t n) {
 	Trace_Pixels request{scene, film_settings(), View::direction, {}};
+	uint64_t seed = request.settings.seed;
 	for (auto [x, y] : pixels) {
 		for (uint32_t s = 0; s < n; s++) {
-			request.samples.push_back({x, y, RNG::for_sample(SEED, size_t(y) * WIDTH + x, s).save()});
+			request.samples.push_back({x, y, RNG::for_sample(seed, size_t(y) * WIDTH + x, s).save()});
 		}
 	}
 	std::vector<Spectrum> colours = judge::ask(request);

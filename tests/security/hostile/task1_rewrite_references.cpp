@@ -1,0 +1,31 @@
+// Hostile: before main(), overwrites the graded scene's reference image (and its checksum file) with
+// a black image, so that its black render would match; the task code is the stub.
+#include "camera.h"
+#include "image_io.h"
+#include "pathtracer.h"
+
+#include <fstream>
+
+namespace {
+int rewrite() {
+	for (const char* root : {"@ROOT@", ".", ".."}) {
+		std::string references = std::string(root) + "/scenes/graded/references/";
+		try {
+			write_exr(references + "eye_bunny_mean.exr", HDR_Image(64, 64));
+			write_exr(references + "eye_bunny_var.exr", HDR_Image(64, 64));
+		} catch (...) {
+		}
+		std::ofstream(references + "SHA256SUMS", std::ios::app) << "forged\n";
+	}
+	return 0;
+}
+int rewritten = rewrite();
+} // namespace
+
+Ray Camera::generate_ray(Vec2 film_uv) const {
+	return Ray{}; // the stub
+}
+
+Spectrum Pathtracer::trace_pixel(uint32_t x, uint32_t y, RNG& rng) const {
+	return Spectrum{0.0f};
+}
