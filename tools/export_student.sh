@@ -20,17 +20,20 @@ fi
 # The reference tasks as students will compile their own: Release, the lab's flags, and no LTO
 # (LTO objects only link with the very compiler version that wrote them).
 cmake -S "$root" -B "$objects" -G Ninja -DCMAKE_BUILD_TYPE=Release -DLAB_LTO=OFF >&2
-archives=()
+archives=(framework_sealed_archive)
 for n in 1 2 3 4 5 6 7; do archives+=("task${n}_reference_archive"); done
 cmake --build "$objects" --parallel "$jobs" --target "${archives[@]}" >&2
 
-# The tree: everything but reference/, the instructors' tests (stress, images, crosscheck, fuzz,
-# export) and the benchmarks. tests/report is the grade report (./lab report); its test in Chromium
-# is registered only where reference/ exists.
-mkdir -p "$dest/tests" "$dest/prebuilt"
+# The tree: everything but reference/, the framework's sealed sources (framework/sealed/, shipped
+# compiled), the instructors' tests (stress, images, crosscheck, fuzz, export, mutants, security) and
+# the benchmarks. tests/judge runs the graders; tests/report is the grade report (./lab report), whose
+# test in Chromium is registered only where reference/ exists.
+mkdir -p "$dest/tests" "$dest/prebuilt" "$dest/tools"
 (cd "$root" && cp -R CMakeLists.txt lab cmake framework tasks student scenes handouts "$dest/")
-(cd "$root/tests" && cp -R CMakeLists.txt support framework task1 task2 task3 task4 task5 task6 task7 report "$dest/tests/")
-cp "$objects"/prebuilt/libtask[1-7]_reference.a "$dest/prebuilt/"
+rm -rf "$dest/framework/sealed"
+cp "$root/tools/compile-student" "$dest/tools/"
+(cd "$root/tests" && cp -R CMakeLists.txt judge support framework task1 task2 task3 task4 task5 task6 task7 report "$dest/tests/")
+cp "$objects"/prebuilt/libtask[1-7]_reference.a "$objects/prebuilt/libframework_sealed.a" "$dest/prebuilt/"
 
 # The students' README: the "For students" section of the instructors' README.
 {

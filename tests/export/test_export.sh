@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
-# The student release (./lab export) in a temporary folder: it must hold no reference source, and
-# its task-1 grader must build from the prebuilt reference and fail on the shipped stub.
+# The student release (./lab export) in a temporary folder: it must hold no solution source (no
+# reference/, no framework/sealed/, no line of reference code, no function of the reference or the
+# sealed framework, renamed or not), and its task-1 grader must build from the prebuilt reference and
+# fail on the shipped stub.
 #
-# usage: test_export.sh REPOSITORY_ROOT
+# usage: test_export.sh REPOSITORY_ROOT SOLUTION_SCAN
 set -euo pipefail
 
 root=$1
+scan=$2
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "export test: $*" >&2; exit 1; }
@@ -16,6 +19,8 @@ release=$tmp/release
 
 # No reference source: no reference/ folder, and no line of reference code that the stubs lack.
 [ ! -e "$release/reference" ] || fail "the release has a reference/ folder"
+[ ! -e "$release/framework/sealed" ] || fail "the release has the framework's sealed sources"
+[ -f "$release/prebuilt/libframework_sealed.a" ] || fail "prebuilt/libframework_sealed.a is missing"
 for n in 1 2 3 4 5 6 7; do
 	[ -f "$release/prebuilt/libtask${n}_reference.a" ] || fail "prebuilt/libtask${n}_reference.a is missing"
 done
@@ -41,17 +46,34 @@ while IFS=: read -r file count; do
 done < <(grep -rIcF -f "$patterns" "$release" | grep -v ':0$' || true)
 echo "export test: no file of the release has 3 of the $checked distinctive reference lines"
 
+# By function: no function of the release holds most of a function of the reference or of the
+# sealed framework, whatever its names (tests/export/solution_scan.cpp).
+solution=("$root"/reference/*.cpp "$root"/framework/sealed/*.cpp)
+mapfile -t release_sources < <(find "$release" -name '*.cpp' -o -name '*.h' | grep -v "/build/" | sort)
+"$scan" --solution "${solution[@]}" --release "${release_sources[@]}" >"$tmp/scan.log" ||
+	{ cat "$tmp/scan.log" >&2; fail "the release holds solution functions"; }
+tail -1 "$tmp/scan.log"
+# The scan must be able to fail: a copy of the reference's Triangle::hit with every name changed and
+# its comments dropped and its lines rejoined is found.
+sed -n '/^Trace Triangle::hit/,/^}/p' "$root/reference/task2_shapes.cpp" |
+	sed -e 's|//.*||; s/\be1\b/edge_a/g; s/\be2\b/edge_b/g; s/\binv_det\b/r/g; s/\bdet\b/d/g; s/Triangle::hit/Tri::intersect/' |
+	tr '\n' ' ' >"$tmp/planted.cpp"
+"$scan" --solution "${solution[@]}" --release "$tmp/planted.cpp" >"$tmp/planted.log" &&
+	fail "solution_scan did not find a renamed copy of Triangle::hit"
+grep -q "of the solution function" "$tmp/planted.log" || fail "solution_scan failed without naming the copy"
+echo "export test: solution_scan finds a renamed copy of Triangle::hit"
+
 # The student's view: configure, build the task-1 grader (and the grade report's tool), run ctest -L task1.
 cmake -S "$release" -B "$release/build" -G Ninja -DCMAKE_BUILD_TYPE=Release >"$tmp/configure.log" 2>&1 ||
 	{ cat "$tmp/configure.log" >&2; fail "the release does not configure"; }
-cmake --build "$release/build" --parallel 2 --target grader_task1_student grade_report >"$tmp/build.log" 2>&1 ||
-	{ tail -40 "$tmp/build.log" >&2; fail "grader_task1_student or grade_report does not build in the release"; }
+cmake --build "$release/build" --parallel 2 --target judge_task1 subject_task1_student grade_report >"$tmp/build.log" 2>&1 ||
+	{ tail -40 "$tmp/build.log" >&2; fail "judge_task1, subject_task1_student or grade_report does not build in the release"; }
 status=0
 (cd "$release/build" && ctest --no-tests=error --output-on-failure -L task1) >"$tmp/ctest.log" 2>&1 || status=$?
 cat "$tmp/ctest.log" | tail -15
 [ "$status" -ne 0 ] || fail "ctest -L task1 passed on the shipped stub"
 grep -q "tests failed out of 1$" "$tmp/ctest.log" || fail "ctest -L task1 did not run exactly one test"
-grep -q "grader_task1_student" "$tmp/ctest.log" || fail "the output does not name grader_task1_student"
+grep -q "judge_task1" "$tmp/ctest.log" || fail "the output does not name judge_task1"
 grep -Eq "test cases: *[0-9]+ \| *([0-9]+ passed \| *)?[1-9][0-9]* failed" "$tmp/ctest.log" ||
 	fail "the grader did not run to its summary with failed test cases (a crash?)"
 echo "export test: the release builds, and its task-1 grader fails on the stub as it should"
@@ -59,8 +81,8 @@ echo "export test: the release builds, and its task-1 grader fails on the stub a
 # The grade report's pieces work in the release: the task-1 grader records its results and images,
 # and grade_report turns them into a page that shows task 1 failing (./lab report runs all seven).
 status=0
-(cd "$release" && LAB_REPORT_DIR=$tmp/report LAB_REPORT_TASK=1 build/tests/grader_task1_student) >"$tmp/report.log" 2>&1 ||
-	status=$?
+(cd "$release" && LAB_REPORT_DIR=$tmp/report LAB_REPORT_TASK=1 build/tests/judge_task1 \
+	--subject build/tests/judge/subject_task1_student) >"$tmp/report.log" 2>&1 || status=$?
 [ "$status" -ne 0 ] || fail "the task-1 grader passed on the stub with LAB_REPORT_DIR set"
 echo "$status" >"$tmp/report/task1.exit"
 "$release/build/tests/report/grade_report" "$tmp/report" >/dev/null 2>&1 || fail "grade_report failed in the release"
