@@ -1,8 +1,14 @@
-// grade_report DIR: reads what `./lab report` left in DIR (task_result.h) and writes DIR/index.html,
-// the student's grade report (report_page.h); prints each task's status, then the page's path.
+// grade_report DIR [--rubric FILE [--execution-time SECONDS]]: reads what `./lab report` or
+// grade-submission left in DIR (task_result.h) and writes DIR/index.html, the grade report
+// (report_page.h); prints each task's status, then the page's path. With a rubric (rubric.h) it also
+// scores each task and writes DIR/results.json (Gradescope's format) and DIR/junit.xml
+// (results_files.h), and prints the points.
 #include "report_page.h"
+#include "results_files.h"
+#include "rubric.h"
 #include "task_result.h"
 
+#include <cstdio>
 #include <ctime>
 #include <fstream>
 #include <iostream>
@@ -17,13 +23,31 @@ std::string now() {
 } // namespace
 
 int main(int argc, char** argv) {
-	if (argc != 2) {
-		std::cerr << "usage: grade_report DIR   (./lab report runs it)\n";
+	std::vector<std::string> args(argv + 1, argv + argc);
+	std::string rubric_file;
+	double execution_time = 0.0;
+	for (size_t i = 1; i + 1 < args.size(); i += 2) {
+		if (args[i] == "--rubric") rubric_file = args[i + 1];
+		else if (args[i] == "--execution-time") execution_time = std::stod(args[i + 1]);
+		else args.clear();
+	}
+	if (args.empty() || args.size() % 2 == 0) {
+		std::cerr << "usage: grade_report DIR [--rubric FILE [--execution-time SECONDS]]\n";
 		return 2;
 	}
-	std::filesystem::path dir = argv[1];
+	std::filesystem::path dir = args[0];
 	std::vector<Task_Result> tasks;
 	for (const Task_Info& task : lab_tasks()) tasks.push_back(read_task_result(dir, task));
+	std::vector<Task_Score> scores;
+	if (!rubric_file.empty()) {
+		try {
+			Rubric rubric = Rubric::read(rubric_file);
+			for (const Task_Result& t : tasks) scores.push_back(score(rubric, t));
+		} catch (const Rubric_Error& problem) {
+			std::cerr << "grade_report: " << problem.what() << "\n";
+			return 1;
+		}
+	}
 	std::filesystem::path page = dir / "index.html";
 	std::ofstream out(page);
 	write_report_page(out, tasks, now());
@@ -34,6 +58,29 @@ int main(int argc, char** argv) {
 	for (const Task_Result& t : tasks) {
 		std::cerr << "task " << t.task.number << " (" << t.task.title << "): " << status_name(t.status) << ". " << t.why
 		          << "\n";
+	}
+	if (!scores.empty()) {
+		std::ofstream results(dir / "results.json"), junit(dir / "junit.xml");
+		std::string summary;
+		double total = 0.0, most = 0.0;
+		for (size_t i = 0; i < scores.size(); i++) {
+			char line[160];
+			std::snprintf(line, sizeof line, "task %d: %.2f of %.2f points (%s)\n", scores[i].task, scores[i].score,
+			              scores[i].max_score, status_name(tasks[i].status).c_str());
+			summary += line;
+			total += scores[i].score;
+			most += scores[i].max_score;
+		}
+		char line[80];
+		std::snprintf(line, sizeof line, "total: %.2f of %.2f points\n", total, most);
+		summary += line;
+		write_gradescope_results(results, scores, tasks, execution_time, summary);
+		write_junit(junit, scores);
+		if (!results || !junit) {
+			std::cerr << "grade_report: cannot write results.json or junit.xml in " << dir.string() << "\n";
+			return 1;
+		}
+		std::cerr << summary;
 	}
 	std::cout << page.string() << "\n";
 	return 0;

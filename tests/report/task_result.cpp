@@ -194,7 +194,8 @@ Task_Result read_task_result(const fs::path& dir, const Task_Info& task) {
 	}
 	result.sandbox = record.value("sandbox", "");
 	result.inputs = record.value("inputs", "");
-	for (const std::string& name : record.value("expected_test_cases", std::vector<std::string>{})) {
+	result.expected = record.value("expected_test_cases", std::vector<std::string>{});
+	for (const std::string& name : result.expected) {
 		bool ran = std::any_of(result.test_cases.begin(), result.test_cases.end(),
 		                       [&](const Test_Case& c) { return c.name == name; });
 		if (!ran) result.not_run.push_back(name);

@@ -57,7 +57,8 @@ struct Task_Result {
 	std::string log_tail; // its last lines, shown when the grader crashed or did not build
 	std::string sandbox;  // how the judge ran the student's code (tests/judge/sandbox.h)
 	std::string inputs;   // the public test cases, or drawn from a grading seed
-	std::vector<std::string> not_run; // test cases of the judge that have no result
+	std::vector<std::string> expected; // every test case of the judge, as it listed them
+	std::vector<std::string> not_run;  // those that have no result
 
 	size_t passed_count() const;
 };

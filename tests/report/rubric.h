@@ -1,0 +1,58 @@
+#pragma once
+// The rubric (grading/rubric.json): how many points each task is worth and how they are split over
+// its test cases. Format:
+//
+//   {"tasks": [{"task": 1, "points": 5,
+//               "test_cases": [{"name": "<the judge's TEST_CASE name>", "weight": 2},
+//                              {"name": "...", "weight": 1, "visibility": "after_published"}, ...]},
+//              ...]}
+//
+// A test case is worth points * weight / (sum of its task's weights); it earns them when it passes.
+// Weight 0 marks a test case that earns nothing by itself (one that a program doing nothing passes,
+// such as "a scene without light renders black"): the shipped stubs score exactly 0. "visibility"
+// (Gradescope's words: visible, after_published, after_due_date, hidden; default visible) says when
+// students see the test case. Every test case of every judge must be in the rubric, and nothing else.
+#include "task_result.h"
+
+#include <filesystem>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+struct Rubric_Error : std::runtime_error {
+	using std::runtime_error::runtime_error;
+};
+
+struct Rubric {
+	struct Test_Case {
+		std::string name;
+		double weight = 1.0;
+		std::string visibility = "visible";
+	};
+	struct Task {
+		double points = 0.0;
+		std::vector<Test_Case> test_cases;
+		double total_weight() const;
+	};
+	std::map<int, Task> tasks;
+
+	static Rubric read(const std::filesystem::path& file); // throws Rubric_Error naming the problem
+};
+
+// One test case's score.
+struct Scored_Test_Case {
+	std::string name, visibility, output;
+	double score = 0.0, max_score = 0.0;
+	bool passed = false;
+};
+
+struct Task_Score {
+	int task = 0;
+	double score = 0.0, max_score = 0.0;
+	std::vector<Scored_Test_Case> test_cases;
+};
+
+// A task's points from its result. Throws Rubric_Error if the judge has a test case the rubric does
+// not know or the rubric names one the judge does not have (a task that did not build has none).
+Task_Score score(const Rubric& rubric, const Task_Result& result);
