@@ -1,8 +1,9 @@
 // grade_report DIR [--rubric FILE [--execution-time SECONDS]]: reads what `./lab report` or
 // grade-submission left in DIR (task_result.h) and writes DIR/index.html, the grade report
 // (report_page.h); prints each task's status, then the page's path. With a rubric (rubric.h) it also
-// scores each task and writes DIR/results.json (Gradescope's format) and DIR/junit.xml
-// (results_files.h), and prints the points.
+// scores each task and writes DIR/results.json (Gradescope's format), DIR/junit.xml
+// (results_files.h) and DIR/points.csv (each task's points and the total, for a gradebook), and
+// prints the points.
 #include "report_page.h"
 #include "results_files.h"
 #include "rubric.h"
@@ -11,6 +12,7 @@
 #include <cstdio>
 #include <ctime>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 
 namespace {
@@ -76,8 +78,12 @@ int main(int argc, char** argv) {
 		summary += line;
 		write_gradescope_results(results, scores, tasks, execution_time, summary);
 		write_junit(junit, scores);
-		if (!results || !junit) {
-			std::cerr << "grade_report: cannot write results.json or junit.xml in " << dir.string() << "\n";
+		// One line for a gradebook (grade-class): the points of each task, then the total.
+		std::ofstream points(dir / "points.csv");
+		for (const Task_Score& s : scores) points << std::fixed << std::setprecision(2) << s.score << ",";
+		points << std::fixed << std::setprecision(2) << total << "\n";
+		if (!results || !junit || !points) {
+			std::cerr << "grade_report: cannot write results.json, junit.xml or points.csv in " << dir.string() << "\n";
 			return 1;
 		}
 		std::cerr << summary;
