@@ -10,9 +10,9 @@
 // roulette keeps the expectation, so the same bounds hold with it (its noise is in the variance).
 #include "film_statistics.h"
 #include "furnace_scenes.h"
-#include "judge.h"
 #include "statistics.h"
 #include "student_furnaces.h"
+#include "student_secret_inputs.h"
 
 #include <catch2/catch.hpp>
 
@@ -27,16 +27,6 @@ namespace {
 constexpr size_t Z_TESTS = 72; // 27 + 24 + 18 + 3, counted per TEST_CASE below
 const double Z = stats::two_sided_z(stats::sidak(0.01, Z_TESTS));
 
-// A test case's generator of secret inputs, or none in public runs.
-std::optional<RNG> secret_inputs(const std::string& test_case) {
-	if (!judge::secret_seed()) return std::nullopt;
-	return judge::case_generator(test_case);
-}
-
-// The public render seed, or one drawn from the grading seed.
-uint64_t render_seed(std::optional<RNG>& secret, uint64_t public_seed) {
-	return secret ? uint64_t(secret->integer()) << 32 | secret->integer() : public_seed;
-}
 
 void require_finite(const Film& film) {
 	INFO(film.non_finite() << " samples were NaN or infinite (render with --nan-map to see where). Look for "
@@ -57,7 +47,7 @@ TEST_CASE("Furnace: a white diffuse sphere in a uniform environment renders the 
 	Pixel_Coverage coverage(view.options.radius, view.distance, view.v_fov, size, size);
 	for (uint32_t depth : {1u, 2u, 8u}) {
 		CAPTURE(depth);
-		Film film = render_square(scene, size, 256, depth, render_seed(secret, 41 + depth));
+		Film film = render_square(scene, size, 256, depth, seed_or_public(secret, 41 + depth));
 		require_finite(film);
 		for (auto kind : {Pixel_Coverage::sphere, Pixel_Coverage::silhouette, Pixel_Coverage::background}) {
 			std::string what = std::string("max_depth ") + std::to_string(depth) + ", mean of the " + to_string(kind) +
@@ -90,7 +80,7 @@ TEST_CASE("Furnace: a diffuse sphere of albedo rho under a uniform sky L renders
 	auto on_sky = [&](uint32_t x, uint32_t y) { return coverage(x, y) == Pixel_Coverage::background; };
 	for (uint32_t depth : {0u, 1u, 2u, 5u}) {
 		CAPTURE(depth);
-		Film film = render_square(scene, size, 256, depth, render_seed(secret, 7 + depth));
+		Film film = render_square(scene, size, 256, depth, seed_or_public(secret, 7 + depth));
 		require_finite(film);
 		std::string prefix = "max_depth " + std::to_string(depth) + ", mean of the ";
 		for (int c = 0; c < 3; c++) {
@@ -126,7 +116,7 @@ TEST_CASE("Furnace: inside an emitting diffuse sphere, max_depth D gives Le * (1
 	Scene scene = sphere_seen_from_inside(diffuse_material(rho, le), options, view.eye, view.target, view.v_fov);
 	for (uint32_t depth : {0u, 1u, 2u, 3u, 5u, 40u}) {
 		CAPTURE(depth);
-		Film film = render_square(scene, 24, 128, depth, render_seed(secret, 100 + depth));
+		Film film = render_square(scene, 24, 128, depth, seed_or_public(secret, 100 + depth));
 		require_finite(film);
 		for (int c = 0; c < 3; c++) {
 			double sum = 0.0, power = 1.0;
@@ -158,7 +148,7 @@ TEST_CASE("Furnace: a scene without emitters or environment renders exactly 0") 
 	Scene inside = sphere_seen_from_inside(diffuse_material(albedo), dark, inside_view.eye, inside_view.target,
 	                                       inside_view.v_fov);
 	for (const Scene* scene : {&outside, &inside}) {
-		Film film = render_square(*scene, 16, 16, 8, render_seed(secret, 3));
+		Film film = render_square(*scene, 16, 16, 8, seed_or_public(secret, 3));
 		require_finite(film);
 		double largest = 0.0;
 		for (const Pixel_Stats& p : film.pixels) largest = std::max({largest, p.mean.x, p.mean.y, p.mean.z});
@@ -197,7 +187,7 @@ TEST_CASE("Furnace far from the origin: new rays must leave their surface at any
 	Scene scene = sphere_seen_from_outside(diffuse_material(rho), view.options, view.distance, view.v_fov);
 	Pixel_Coverage coverage(view.options.radius, view.distance, view.v_fov, size, size);
 	auto on_sphere = [&](uint32_t x, uint32_t y) { return coverage(x, y) == Pixel_Coverage::sphere; };
-	Film film = render_square(scene, size, 256, 2, render_seed(secret, 5));
+	Film film = render_square(scene, size, 256, 2, seed_or_public(secret, 5));
 	require_finite(film);
 	for (int c = 0; c < 3; c++) {
 		check_mean(film, c, rho[c], Z, "sphere centred at " + centre + ", mean of the " +
