@@ -69,8 +69,9 @@ struct Outside_View {
 // half height (as the public views do), so that sphere, silhouette and background pixels all exist.
 Outside_View random_outside_view(RNG& rng, Furnace_Options options);
 
-// A camera inside a sphere of `radius` centred at `options.center`, drawn from `rng`: the eye within
-// `max_eye_distance` of the centre, looking in a random direction that is not near vertical.
+// A camera for sphere_seen_from_inside, drawn from `rng`: the eye uniform in the ball of radius
+// `max_eye_distance` around the sphere's centre, looking in a random direction that is not near
+// vertical, with a field of view of 40 to 90 degrees.
 struct Inside_View {
 	Vec3 eye, target; // relative to the centre, as sphere_seen_from_inside takes them
 	float v_fov = 60.0f;

@@ -80,7 +80,7 @@ TEST_CASE("fresnel from inside (glass of index 1.5 into vacuum) matches the exac
 	};
 	if (secret) {
 		table.clear();
-		add_drawn(table, *secret, 6, 0.0, 40.0, -1.0f); // F is steep just below 41.81: as public
+		add_drawn(table, *secret, 6, 0.0, 40.0, -1.0f); // not closer to 41.81, where F is steep: as public
 		add_drawn(table, *secret, 4, 41.9, 89.0, -1.0f);
 	}
 	std::vector<protocol::Fresnel::Query> queries;
@@ -105,7 +105,9 @@ TEST_CASE("fresnel is the same for a direction and its refracted partner (both s
 	float ior = 1.5f;
 	if (secret) {
 		ior = task5::random_ior(*secret);
-		for (double& theta : thetas) theta = task5::uniform(*secret, 0.0, 89.0);
+		// Up to 85 degrees, as public: nearer grazing the inside angle is near critical, where F's
+		// float rounding differs by more than the tolerance between the two sides.
+		for (double& theta : thetas) theta = task5::uniform(*secret, 0.0, 85.0);
 	}
 	std::vector<protocol::Fresnel::Query> queries;
 	for (double theta_i : thetas) {

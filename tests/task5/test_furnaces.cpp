@@ -75,7 +75,7 @@ TEST_CASE("Glass, seen from inside: the lab does not scale radiance by eta^2, so
 	// of a sphere of radius 10, so every ray meets the surface at most asin(0.3) = 17.5 degrees from
 	// the normal, below the critical angle: paths escape with probability >= 0.95 per hit and
 	// max_depth 32 leaves a 0.05^32 chance of being cut. A grading seed puts the eye anywhere within
-	// 0.4 radii of the centre (at most asin(0.4) = 23.6 degrees from the normal, F <= 0.05 still).
+	// 0.4 radii of the centre (at most asin(0.4) = 23.6 degrees from the normal, where F = 0.044).
 	std::optional<RNG> secret = secret_inputs("glass from inside");
 	Furnace_Options options;
 	options.radius = 10.0f;

@@ -11,7 +11,6 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <sstream>
 #include <string>
 #include <vector>
 
