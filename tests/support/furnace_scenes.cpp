@@ -1,5 +1,4 @@
 #include "furnace_scenes.h"
-#include "render.h"
 
 #include <algorithm>
 #include <cmath>
@@ -63,11 +62,41 @@ const char* to_string(Pixel_Coverage::Kind kind) {
 	}
 }
 
-Film render_square(const Scene& scene, uint32_t size, uint32_t spp, uint32_t max_depth, uint64_t seed) {
-	Render_Settings settings;
-	settings.width = settings.height = size;
-	settings.samples = spp;
-	settings.max_depth = max_depth;
-	settings.seed = seed;
-	return render(Pathtracer(scene, settings));
+Vec3 random_point(RNG& rng, float lo, float hi) {
+	return lo + (hi - lo) * Vec3{rng.unit(), rng.unit(), rng.unit()};
+}
+
+Spectrum random_colour(RNG& rng, float lo, float hi) {
+	return Spectrum(random_point(rng, lo, hi));
+}
+
+Vec3 random_unit_vector(RNG& rng) {
+	// Uniform on the sphere: z uniform in [-1, 1] (Archimedes), azimuth uniform.
+	float z = 2.0f * rng.unit() - 1.0f, phi = 2.0f * float(M_PI) * rng.unit();
+	float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+	return Vec3{r * std::cos(phi), r * std::sin(phi), z};
+}
+
+Outside_View random_outside_view(RNG& rng, Furnace_Options options) {
+	Outside_View view;
+	options.center = random_point(rng, -10.0f, 10.0f);
+	options.radius = 0.5f + 1.5f * rng.unit();
+	view.options = options;
+	view.distance = options.radius * (2.5f + 3.5f * rng.unit());
+	double disc_radius = std::tan(std::asin(double(options.radius) / double(view.distance)));
+	double half_height = disc_radius / (0.45 + 0.35 * double(rng.unit()));
+	view.v_fov = float(2.0 * std::atan(half_height) * 180.0 / M_PI);
+	return view;
+}
+
+Inside_View random_inside_view(RNG& rng, float max_eye_distance) {
+	Inside_View view;
+	view.eye = max_eye_distance * std::cbrt(rng.unit()) * random_unit_vector(rng); // uniform in the ball
+	Vec3 look;
+	do {
+		look = random_unit_vector(rng);
+	} while (std::abs(look.y) > 0.9f); // look_at needs a direction that is not along its up vector
+	view.target = view.eye + look;
+	view.v_fov = 40.0f + 50.0f * rng.unit();
+	return view;
 }

@@ -9,6 +9,7 @@
 //   by that disc, independently of the task-1 code.
 // - from INSIDE: the camera sits inside the sphere, so every camera ray hits it.
 #include "film.h"
+#include "rng.h"
 #include "scene.h"
 #include "test_materials.h"
 
@@ -52,6 +53,32 @@ private:
 
 const char* to_string(Pixel_Coverage::Kind kind);
 
+// ---- Furnaces placed by a grading seed (tests/judge/judge.h) ----
+// The graders render these with the student's code: render_square in student_furnaces.h.
 
-// Renders `scene` on a square film of size x size pixels with the reference pipeline (render()).
-Film render_square(const Scene& scene, uint32_t size, uint32_t spp, uint32_t max_depth, uint64_t seed);
+// A sphere seen from outside: `options` with the sphere moved and resized, the camera's distance
+// and field of view.
+struct Outside_View {
+	Furnace_Options options;
+	float distance = 4.0f;
+	float v_fov = 40.0f;
+};
+
+// An Outside_View drawn from `rng`: centre in [-10, 10]^3, radius in [0.5, 2], camera 2.5 to 6 radii
+// from the centre, and a field of view in which the sphere's disc spans 45% to 80% of the film's
+// half height (as the public views do), so that sphere, silhouette and background pixels all exist.
+Outside_View random_outside_view(RNG& rng, Furnace_Options options);
+
+// A camera for sphere_seen_from_inside, drawn from `rng`: the eye uniform in the ball of radius
+// `max_eye_distance` around the sphere's centre, looking in a random direction that is not near
+// vertical, with a field of view of 40 to 90 degrees.
+struct Inside_View {
+	Vec3 eye, target; // relative to the centre, as sphere_seen_from_inside takes them
+	float v_fov = 60.0f;
+};
+Inside_View random_inside_view(RNG& rng, float max_eye_distance);
+
+// A point uniform in [lo, hi]^3, a colour uniform in [lo, hi]^3, a unit vector uniform on the sphere.
+Vec3 random_point(RNG& rng, float lo, float hi);
+Spectrum random_colour(RNG& rng, float lo, float hi);
+Vec3 random_unit_vector(RNG& rng);

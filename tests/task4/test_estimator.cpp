@@ -1,5 +1,7 @@
 // Task 4, handouts §4.2-§4.4: the path-tracing estimator Pathtracer::shade, graded on scenes whose
-// answer is known in closed form ("furnaces"), rendered with the real pipeline (render()).
+// answer is known in closed form ("furnaces"), rendered with the real pipeline (render()) and the
+// student's task 4 in the subject (student_furnaces.h). With a grading seed the furnaces' placement,
+// albedos, radiances and render seeds are drawn from it; the closed forms hold for any of them.
 //
 // Each comparison is a z-test of an image mean against its closed form, with the standard error
 // taken from the film's own per-pixel variances (tests/support/film_statistics.h). Where the
@@ -8,12 +10,15 @@
 // roulette keeps the expectation, so the same bounds hold with it (its noise is in the variance).
 #include "film_statistics.h"
 #include "furnace_scenes.h"
-#include "render.h"
 #include "statistics.h"
+#include "student_furnaces.h"
+#include "student_secret_inputs.h"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <optional>
+#include <sstream>
 #include <string>
 
 namespace {
@@ -34,13 +39,15 @@ void require_finite(const Film& film) {
 TEST_CASE("Furnace: a white diffuse sphere in a uniform environment renders the environment, 1, everywhere") {
 	// Albedo 1 and L_env = 1: whatever the path, light is neither created nor lost (anchors §4). A
 	// convex object never sees itself, so this holds for every max_depth >= 1.
-	const float distance = 4.0f, fov = 40.0f;
+	std::optional<RNG> secret = secret_inputs("white furnace");
+	Outside_View view{Furnace_Options{}, 4.0f, 40.0f};
+	if (secret) view = random_outside_view(*secret, view.options);
 	const uint32_t size = 32;
-	Scene scene = sphere_seen_from_outside(diffuse_material(Spectrum{1.0f}), Furnace_Options{}, distance, fov);
-	Pixel_Coverage coverage(1.0f, distance, fov, size, size);
+	Scene scene = sphere_seen_from_outside(diffuse_material(Spectrum{1.0f}), view.options, view.distance, view.v_fov);
+	Pixel_Coverage coverage(view.options.radius, view.distance, view.v_fov, size, size);
 	for (uint32_t depth : {1u, 2u, 8u}) {
 		CAPTURE(depth);
-		Film film = render_square(scene, size, 256, depth, 41 + depth);
+		Film film = render_square(scene, size, 256, depth, seed_or_public(secret, 41 + depth));
 		require_finite(film);
 		for (auto kind : {Pixel_Coverage::sphere, Pixel_Coverage::silhouette, Pixel_Coverage::background}) {
 			std::string what = std::string("max_depth ") + std::to_string(depth) + ", mean of the " + to_string(kind) +
@@ -57,18 +64,23 @@ TEST_CASE("Furnace: a diffuse sphere of albedo rho under a uniform sky L renders
 	// The sphere is convex: the first bounce sees only the sky, so its radiance is
 	// integral (rho / pi) L cos = rho * L whatever max_depth >= 1. With max_depth = 0 a camera ray
 	// may not scatter (pathtracer.h): the non-emitting sphere is black, the sky still L.
-	const Spectrum rho{0.8f, 0.5f, 0.2f}, sky{0.5f, 1.0f, 2.0f};
-	const float distance = 3.0f, fov = 50.0f;
+	std::optional<RNG> secret = secret_inputs("diffuse furnace");
+	Spectrum rho{0.8f, 0.5f, 0.2f}, sky{0.5f, 1.0f, 2.0f};
+	Outside_View view{Furnace_Options{}, 3.0f, 50.0f};
+	if (secret) {
+		rho = random_colour(*secret, 0.05f, 0.95f);
+		sky = random_colour(*secret, 0.2f, 3.0f);
+		view = random_outside_view(*secret, view.options);
+	}
 	const uint32_t size = 32;
-	Furnace_Options options;
-	options.environment = sky;
-	Scene scene = sphere_seen_from_outside(diffuse_material(rho), options, distance, fov);
-	Pixel_Coverage coverage(1.0f, distance, fov, size, size);
+	view.options.environment = sky;
+	Scene scene = sphere_seen_from_outside(diffuse_material(rho), view.options, view.distance, view.v_fov);
+	Pixel_Coverage coverage(view.options.radius, view.distance, view.v_fov, size, size);
 	auto on_sphere = [&](uint32_t x, uint32_t y) { return coverage(x, y) == Pixel_Coverage::sphere; };
 	auto on_sky = [&](uint32_t x, uint32_t y) { return coverage(x, y) == Pixel_Coverage::background; };
 	for (uint32_t depth : {0u, 1u, 2u, 5u}) {
 		CAPTURE(depth);
-		Film film = render_square(scene, size, 256, depth, 7 + depth);
+		Film film = render_square(scene, size, 256, depth, seed_or_public(secret, 7 + depth));
 		require_finite(film);
 		std::string prefix = "max_depth " + std::to_string(depth) + ", mean of the ";
 		for (int c = 0; c < 3; c++) {
@@ -87,16 +99,24 @@ TEST_CASE("Furnace: inside an emitting diffuse sphere, max_depth D gives Le * (1
 	// arrives, so a path with at most D bounces carries Le * sum_{k=0..D} rho^k (anchors §4). An
 	// off-by-one in the depth test shifts the answer by a whole term, e.g. D = 1 gives
 	// Le (1 + rho + rho^2) instead of Le (1 + rho). D = 5 and 40 exercise Russian roulette.
-	const Spectrum rho{0.5f, 0.7f, 0.3f}, le{1.0f, 0.5f, 2.0f};
+	std::optional<RNG> secret = secret_inputs("geometric series");
+	Spectrum rho{0.5f, 0.7f, 0.3f}, le{1.0f, 0.5f, 2.0f};
 	Furnace_Options options;
 	options.radius = 2.0f;
 	options.has_environment = false;
 	options.inward_normals = true; // the sphere emits and reflects towards its centre
-	const Vec3 eye{0.3f, -0.2f, 0.5f}, target{-0.4f, 0.1f, -1.0f};
-	Scene scene = sphere_seen_from_inside(diffuse_material(rho, le), options, eye, target, 70.0f);
+	Inside_View view{Vec3{0.3f, -0.2f, 0.5f}, Vec3{-0.4f, 0.1f, -1.0f}, 70.0f};
+	if (secret) {
+		rho = random_colour(*secret, 0.1f, 0.8f);
+		le = random_colour(*secret, 0.2f, 2.0f);
+		options.center = random_point(*secret, -10.0f, 10.0f);
+		options.radius = 1.0f + 2.0f * secret->unit();
+		view = random_inside_view(*secret, 0.5f * options.radius);
+	}
+	Scene scene = sphere_seen_from_inside(diffuse_material(rho, le), options, view.eye, view.target, view.v_fov);
 	for (uint32_t depth : {0u, 1u, 2u, 3u, 5u, 40u}) {
 		CAPTURE(depth);
-		Film film = render_square(scene, 24, 128, depth, 100 + depth);
+		Film film = render_square(scene, 24, 128, depth, seed_or_public(secret, 100 + depth));
 		require_finite(film);
 		for (int c = 0; c < 3; c++) {
 			double sum = 0.0, power = 1.0;
@@ -112,14 +132,23 @@ TEST_CASE("Furnace: inside an emitting diffuse sphere, max_depth D gives Le * (1
 
 TEST_CASE("Furnace: a scene without emitters or environment renders exactly 0") {
 	// No light anywhere: every path carries 0, whatever the BSDF does.
-	Furnace_Options dark;
-	dark.has_environment = false;
-	Scene outside = sphere_seen_from_outside(diffuse_material(Spectrum{0.9f}), dark, 3.0f, 50.0f);
+	std::optional<RNG> secret = secret_inputs("black scene");
+	Spectrum albedo{0.9f};
+	Outside_View view{Furnace_Options{}, 3.0f, 50.0f};
+	view.options.has_environment = false;
+	Inside_View inside_view{Vec3{0.1f}, Vec3{0.0f, 0.0f, -1.0f}, 60.0f};
+	if (secret) {
+		albedo = random_colour(*secret, 0.05f, 1.0f);
+		view = random_outside_view(*secret, view.options);
+		inside_view = random_inside_view(*secret, 0.5f * view.options.radius);
+	}
+	Scene outside = sphere_seen_from_outside(diffuse_material(albedo), view.options, view.distance, view.v_fov);
+	Furnace_Options dark = view.options;
 	dark.inward_normals = true;
-	Scene inside =
-		sphere_seen_from_inside(diffuse_material(Spectrum{0.9f}), dark, Vec3{0.1f}, Vec3{0.0f, 0.0f, -1.0f}, 60.0f);
+	Scene inside = sphere_seen_from_inside(diffuse_material(albedo), dark, inside_view.eye, inside_view.target,
+	                                       inside_view.v_fov);
 	for (const Scene* scene : {&outside, &inside}) {
-		Film film = render_square(*scene, 16, 16, 8, 3);
+		Film film = render_square(*scene, 16, 16, 8, seed_or_public(secret, 3));
 		require_finite(film);
 		double largest = 0.0;
 		for (const Pixel_Stats& p : film.pixels) largest = std::max({largest, p.mean.x, p.mean.y, p.mean.z});
@@ -135,18 +164,33 @@ TEST_CASE("Furnace far from the origin: new rays must leave their surface at any
 	// 10^-3 apart, so a hit point may lie that far inside the sphere: a new ray whose dist_bounds
 	// start at a fixed small distance (1e-4, say) hits its own surface again, an extra "bounce"
 	// that darkens the sphere. The offset must grow with |hit.position| (handout §4.2).
-	const Spectrum rho{0.8f, 0.5f, 0.2f};
-	const float distance = 3.0f, fov = 50.0f;
+	std::optional<RNG> secret = secret_inputs("far from the origin");
+	Spectrum rho{0.8f, 0.5f, 0.2f};
+	Outside_View view{Furnace_Options{}, 3.0f, 50.0f};
+	view.options.center = Vec3{1e4f, -1e4f, 1e4f};
+	std::string centre = "(1e4, -1e4, 1e4)";
+	if (secret) {
+		// Every coordinate's magnitude in [8192, 16384), where floats are 2^-10 ~ 1e-3 apart. The
+		// distance is a multiple of 2^-10 too, so that the camera sits exactly where Pixel_Coverage
+		// assumes.
+		rho = random_colour(*secret, 0.05f, 0.95f);
+		view = random_outside_view(*secret, view.options);
+		view.distance = std::round(view.distance * 1024.0f) / 1024.0f;
+		for (int i = 0; i < 3; i++) {
+			view.options.center[i] = (secret->coin_flip(0.5f) ? 1.0f : -1.0f) * (8192.0f + 8000.0f * secret->unit());
+		}
+		std::ostringstream text;
+		text << "(" << view.options.center.x << ", " << view.options.center.y << ", " << view.options.center.z << ")";
+		centre = text.str();
+	}
 	const uint32_t size = 32;
-	Furnace_Options options;
-	options.center = Vec3{1e4f, -1e4f, 1e4f};
-	Scene scene = sphere_seen_from_outside(diffuse_material(rho), options, distance, fov);
-	Pixel_Coverage coverage(1.0f, distance, fov, size, size);
+	Scene scene = sphere_seen_from_outside(diffuse_material(rho), view.options, view.distance, view.v_fov);
+	Pixel_Coverage coverage(view.options.radius, view.distance, view.v_fov, size, size);
 	auto on_sphere = [&](uint32_t x, uint32_t y) { return coverage(x, y) == Pixel_Coverage::sphere; };
-	Film film = render_square(scene, size, 256, 2, 5);
+	Film film = render_square(scene, size, 256, 2, seed_or_public(secret, 5));
 	require_finite(film);
 	for (int c = 0; c < 3; c++) {
-		check_mean(film, c, rho[c], Z, "sphere centred at (1e4, -1e4, 1e4), mean of the " +
+		check_mean(film, c, rho[c], Z, "sphere centred at " + centre + ", mean of the " +
 		                                std::string(to_string(Pixel_Coverage::sphere)) + " (expected rho * L_env)",
 		           on_sphere);
 	}

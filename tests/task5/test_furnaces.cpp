@@ -1,5 +1,7 @@
 // Task 5, handout §5.5: mirror and glass rendered with the real pipeline (render(), with the
-// reference path tracer of task 4) in scenes whose answer is known in closed form.
+// reference path tracer of task 4) in scenes whose answer is known in closed form, by the student's
+// task 5 in the subject (student_furnaces.h). With a grading seed the placement, the colours, the
+// glass furnace's index of refraction and the render seeds are drawn from it.
 //
 // Mirror and glass samples carry weight exactly reflectance or transmittance (1 here), so under a
 // uniform environment L = 1 almost every sample is exactly 1: the estimator has (nearly) zero
@@ -7,10 +9,12 @@
 // The only exceptions are paths the depth cap cuts while still inside the glass (value 0); see the
 // glass furnace below for how rare they are. Each comparison is a z-test with the film's own
 // standard error plus that rounding allowance, Šidák-corrected over the file's Z_TESTS tests.
+#include "directions.h"
 #include "film_statistics.h"
 #include "furnace_scenes.h"
-#include "render.h"
 #include "statistics.h"
+#include "student_furnaces.h"
+#include "student_secret_inputs.h"
 
 #include <catch2/catch.hpp>
 
@@ -35,14 +39,21 @@ TEST_CASE("Glass furnace: a clear glass sphere in a uniform environment L = 1 re
 	// total internal reflection and a path is still inside after D scattering events with
 	// probability (1 - F) F^(D - 1). Averaged over the disc this is 4.7e-7 for D = 64 (anchors §4:
 	// 3.9e-6 at D = 32), twenty times below FLOAT_SLACK; a cut path would also show in the standard
-	// error. So a correct glass renders 1 to float precision; losing the Fresnel choice (weights F
-	// and 1 - F on top of choosing by F) or absorbing light falls far outside.
-	const float distance = 4.0f, fov = 40.0f;
+	// error. (For the indices 1.2 to 2.4 a grading seed draws it stays below 5.1e-7.) So a correct
+	// glass renders 1 to float precision; losing the Fresnel choice (weights F and 1 - F on top of
+	// choosing by F) or absorbing light falls far outside.
+	std::optional<RNG> secret = secret_inputs("glass furnace");
+	Outside_View view{Furnace_Options{}, 4.0f, 40.0f};
+	float ior = 1.5f;
+	if (secret) {
+		view = random_outside_view(*secret, view.options);
+		ior = task5::random_ior(*secret);
+	}
 	const uint32_t size = 32;
-	const Material clear_glass = glass_material(Spectrum{1.0f}, Spectrum{1.0f}, 1.5f);
-	Scene scene = sphere_seen_from_outside(clear_glass, Furnace_Options{}, distance, fov);
-	Pixel_Coverage coverage(1.0f, distance, fov, size, size);
-	Film film = render_square(scene, size, 64, 64, 11);
+	const Material clear_glass = glass_material(Spectrum{1.0f}, Spectrum{1.0f}, ior);
+	Scene scene = sphere_seen_from_outside(clear_glass, view.options, view.distance, view.v_fov);
+	Pixel_Coverage coverage(view.options.radius, view.distance, view.v_fov, size, size);
+	Film film = render_square(scene, size, 64, 64, seed_or_public(secret, 11));
 	require_finite(film);
 	for (auto kind : {Pixel_Coverage::sphere, Pixel_Coverage::silhouette, Pixel_Coverage::background}) {
 		auto select = [&](uint32_t x, uint32_t y) { return coverage(x, y) == kind; };
@@ -63,12 +74,20 @@ TEST_CASE("Glass, seen from inside: the lab does not scale radiance by eta^2, so
 	// cannot tell (the factors cancel on the way in and out). The camera is 3 units from the centre
 	// of a sphere of radius 10, so every ray meets the surface at most asin(0.3) = 17.5 degrees from
 	// the normal, below the critical angle: paths escape with probability >= 0.95 per hit and
-	// max_depth 32 leaves a 0.05^32 chance of being cut.
+	// max_depth 32 leaves a 0.05^32 chance of being cut. A grading seed puts the eye anywhere within
+	// 0.4 radii of the centre (at most asin(0.4) = 23.6 degrees from the normal, where F = 0.044).
+	std::optional<RNG> secret = secret_inputs("glass from inside");
 	Furnace_Options options;
 	options.radius = 10.0f;
+	Inside_View view{Vec3{3.0f, 0.0f, 0.0f}, Vec3{0.0f, 1.0f, -5.0f}, 60.0f};
+	if (secret) {
+		options.center = random_point(*secret, -10.0f, 10.0f);
+		options.radius = 5.0f + 15.0f * secret->unit();
+		view = random_inside_view(*secret, 0.4f * options.radius);
+	}
 	const Material clear_glass = glass_material(Spectrum{1.0f}, Spectrum{1.0f}, 1.5f);
-	Scene scene = sphere_seen_from_inside(clear_glass, options, Vec3{3.0f, 0.0f, 0.0f}, Vec3{0.0f, 1.0f, -5.0f}, 60.0f);
-	Film film = render_square(scene, 16, 32, 32, 12);
+	Scene scene = sphere_seen_from_inside(clear_glass, options, view.eye, view.target, view.v_fov);
+	Film film = render_square(scene, 16, 32, 32, seed_or_public(secret, 12));
 	require_finite(film);
 	for (int c = 0; c < 3; c++) {
 		check_mean(film, c, 1.0, Z,
@@ -79,14 +98,19 @@ TEST_CASE("Glass, seen from inside: the lab does not scale radiance by eta^2, so
 
 TEST_CASE("Mirror furnace: a mirror sphere of reflectance R in a uniform environment L = 1 renders R") {
 	// A convex mirror reflects every camera ray once, straight into the environment: R * L.
-	const Spectrum reflectance{0.9f, 0.5f, 0.2f};
-	const float distance = 3.0f, fov = 50.0f;
+	std::optional<RNG> secret = secret_inputs("mirror furnace");
+	Spectrum reflectance{0.9f, 0.5f, 0.2f};
+	Outside_View view{Furnace_Options{}, 3.0f, 50.0f};
+	if (secret) {
+		reflectance = random_colour(*secret, 0.05f, 1.0f);
+		view = random_outside_view(*secret, view.options);
+	}
 	const uint32_t size = 32;
-	Scene scene = sphere_seen_from_outside(mirror_material(reflectance), Furnace_Options{}, distance, fov);
-	Pixel_Coverage coverage(1.0f, distance, fov, size, size);
+	Scene scene = sphere_seen_from_outside(mirror_material(reflectance), view.options, view.distance, view.v_fov);
+	Pixel_Coverage coverage(view.options.radius, view.distance, view.v_fov, size, size);
 	auto on_sphere = [&](uint32_t x, uint32_t y) { return coverage(x, y) == Pixel_Coverage::sphere; };
 	auto on_sky = [&](uint32_t x, uint32_t y) { return coverage(x, y) == Pixel_Coverage::background; };
-	Film film = render_square(scene, size, 16, 8, 13);
+	Film film = render_square(scene, size, 16, 8, seed_or_public(secret, 13));
 	require_finite(film);
 	for (int c = 0; c < 3; c++) {
 		check_mean(film, c, reflectance[c], Z,

@@ -1,47 +1,86 @@
 // Task 5, handouts §5.1 and §5.4: BSDF_Mirror and BSDF_Glass scatter (material.h). Both are
-// discrete: Scatter::attenuation is the whole weight of the sample.
-#include "material.h"
+// discrete: Scatter::attenuation is the whole weight of the sample. The student's scatter runs in
+// the subject (tests/judge/protocol.h) with the generators chosen here; expected directions are
+// the reference's reflect and refract. With a grading seed the colours, directions, indices of
+// refraction and generator seeds are drawn from it.
 #include "directions.h"
+#include "judge.h"
+#include "material.h"
 #include "statistics.h"
+#include "student_secret_inputs.h"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace {
 using task5::direction;
 using task5::str;
-using task5::PI;
+using protocol::BSDF_Scatter;
 
-const Spectrum REFLECTANCE{0.9f, 0.8f, 0.7f}, TRANSMITTANCE{0.6f, 0.5f, 0.4f};
+struct Colours {
+	Spectrum reflectance{0.9f, 0.8f, 0.7f}, transmittance{0.6f, 0.5f, 0.4f};
+};
+
+Colours colours(std::optional<RNG>& secret) {
+	Colours c;
+	if (!secret) return c;
+	for (Spectrum* s : {&c.reflectance, &c.transmittance}) {
+		*s = Spectrum{float(task5::uniform(*secret, 0.05, 1.0)), float(task5::uniform(*secret, 0.05, 1.0)),
+		              float(task5::uniform(*secret, 0.05, 1.0))};
+	}
+	return c;
+}
 
 bool same(Spectrum a, Spectrum b) {
 	return glm::length(a - b) <= 1e-6f * glm::length(b);
 }
 
-// The refracted direction by Snell's law in double precision (no total internal reflection).
-Vec3 snell(Vec3 out, double ior) {
-	double eta = out.y > 0.0f ? 1.0 / ior : ior;
-	double cos_in = std::sqrt(1.0 - eta * eta * (1.0 - double(out.y) * out.y));
-	return Vec3{float(-eta * out.x), float(out.y > 0.0f ? -cos_in : cos_in), float(-eta * out.z)};
+// `bsdf`.scatter of each out_dir, `count` times each, from one generator seeded with `seed` (and
+// `stream`), in that order.
+std::vector<Scatter> student_scatter(const BSDF& bsdf, const std::vector<Vec3>& out_dirs, size_t count, uint64_t seed,
+                                     uint64_t stream = 0) {
+	BSDF_Scatter request{bsdf, {}, RNG(seed, stream).save()};
+	for (Vec3 out : out_dirs) request.out_dirs.insert(request.out_dirs.end(), count, out);
+	return judge::ask(request);
+}
+
+Vec3 reference_refract(Vec3 out, float ior) {
+	bool internal = false;
+	return refract(out, ior, internal);
+}
+
+std::string degrees(double theta) {
+	std::ostringstream text;
+	text.precision(4);
+	text << theta;
+	return text.str();
 }
 
 } // namespace
 
 TEST_CASE("Mirror scatter: in_dir = reflect(out_dir) exactly, attenuation = reflectance, from both sides") {
-	BSDF_Mirror mirror{REFLECTANCE};
-	RNG rng(5);
-	for (Vec3 out : {direction(0.0, 0.0), direction(40.0, 1.0), direction(88.0, 2.0), direction(30.0, 3.0, true)}) {
-		Scatter s = mirror.scatter(rng, out);
+	std::optional<RNG> secret = secret_inputs("mirror scatter");
+	const Spectrum reflectance = colours(secret).reflectance;
+	std::vector<Vec3> dirs{direction(0.0, 0.0), direction(40.0, 1.0), direction(88.0, 2.0), direction(30.0, 3.0, true)};
+	if (secret) {
+		for (Vec3& d : dirs) d = direction(task5::uniform(*secret, 0.0, 89.0), task5::random_azimuth(*secret), d.y < 0.0f);
+	}
+	std::vector<Scatter> samples = student_scatter(BSDF(BSDF_Mirror{reflectance}), dirs, 1, seed_or_public(secret, 5));
+	for (size_t i = 0; i < dirs.size(); i++) {
+		Vec3 out = dirs[i], expected = reflect(out);
+		const Scatter& s = samples[i];
 		INFO("mirror scatter of out_dir " << str(out) << " returned in_dir " << str(s.direction) << ", expected "
-		     << str(Vec3{-out.x, out.y, -out.z}) << " = reflect(out_dir) (handout §5.1)");
-		CHECK(s.direction.x == -out.x);
-		CHECK(s.direction.y == out.y);
-		CHECK(s.direction.z == -out.z);
-		INFO("attenuation " << str(s.attenuation) << ", expected the reflectance " << str(REFLECTANCE)
+		     << str(expected) << " = reflect(out_dir) (handout §5.1)");
+		CHECK(s.direction.x == expected.x);
+		CHECK(s.direction.y == expected.y);
+		CHECK(s.direction.z == expected.z);
+		INFO("attenuation " << str(s.attenuation) << ", expected the reflectance " << str(reflectance)
 		     << ": a discrete BSDF's attenuation is the whole sample weight (material.h)");
-		CHECK(s.attenuation == REFLECTANCE);
+		CHECK(s.attenuation == reflectance);
 	}
 }
 
@@ -51,25 +90,40 @@ TEST_CASE("Glass scatter: reflects with probability F and refracts with 1 - F (b
 		bool inside;
 		double F; // testing-anchors §4, exact Fresnel for index 1.5
 	};
-	const Angle angles[] = {
+	std::optional<RNG> secret = secret_inputs("glass frequencies");
+	const Colours c = colours(secret);
+	float ior = 1.5f;
+	std::vector<Angle> angles{
 		{0.0, false, 0.040000}, {45.0, false, 0.050240}, {56.3099, false, 0.073964}, {80.0, false, 0.387704},
 		{0.0, true, 0.040000},  {20.0, true, 0.041729},  {40.0, true, 0.245291},
 	};
+	if (secret) {
+		// Four angles outside, three inside below the critical angle; F is the reference's.
+		ior = task5::random_ior(*secret);
+		double inside_max = task5::critical_angle_degrees(ior) - 2.0;
+		for (Angle& a : angles) {
+			a.theta = task5::uniform(*secret, 0.0, a.inside ? inside_max : 85.0);
+			a.F = fresnel(direction(a.theta, 0.3 + a.theta, a.inside).y, ior);
+		}
+	}
 	const size_t trials = 200000;
 	const double z_max = stats::two_sided_z(stats::sidak(0.01, std::size(angles)));
-	BSDF_Glass glass{REFLECTANCE, TRANSMITTANCE, 1.5f};
-	RNG rng(55, 5);
-	for (const Angle& a : angles) {
-		Vec3 out = direction(a.theta, 0.3 + a.theta, a.inside);
-		Vec3 refracted = snell(out, 1.5);
+	std::vector<Vec3> out_dirs;
+	for (const Angle& a : angles) out_dirs.push_back(direction(a.theta, 0.3 + a.theta, a.inside));
+	std::vector<Scatter> samples = student_scatter(BSDF(BSDF_Glass{c.reflectance, c.transmittance, ior}), out_dirs,
+	                                               trials, seed_or_public(secret, 55), 5);
+	for (size_t k = 0; k < angles.size(); k++) {
+		const Angle& a = angles[k];
+		Vec3 out = out_dirs[k];
+		Vec3 refracted = reference_refract(out, ior);
 		CAPTURE(a.theta, a.inside);
 		size_t reflections = 0;
 		for (size_t i = 0; i < trials; i++) {
-			Scatter s = glass.scatter(rng, out);
+			const Scatter& s = samples[k * trials + i];
 			bool reflected = s.direction.y * out.y > 0.0f;
 			reflections += reflected;
-			Vec3 expected = reflected ? Vec3{-out.x, out.y, -out.z} : refracted;
-			Spectrum weight = reflected ? REFLECTANCE : TRANSMITTANCE;
+			Vec3 expected = reflected ? reflect(out) : refracted;
+			Spectrum weight = reflected ? c.reflectance : c.transmittance;
 			if (glm::length(s.direction - expected) > 1e-5f || !same(s.attenuation, weight)) {
 				INFO("sample " << i << " from " << (a.inside ? "inside" : "outside") << " at " << a.theta
 				     << " deg, out_dir " << str(out) << ": " << (reflected ? "reflected" : "refracted")
@@ -91,35 +145,57 @@ TEST_CASE("Glass scatter: reflects with probability F and refracts with 1 - F (b
 }
 
 TEST_CASE("Glass scatter: beyond the critical angle inside, every sample reflects") {
-	BSDF_Glass glass{REFLECTANCE, TRANSMITTANCE, 1.5f};
-	RNG rng(56);
-	for (double theta : {42.0, 60.0, 85.0}) {
-		Vec3 out = direction(theta, 2.0, true);
+	std::optional<RNG> secret = secret_inputs("glass total internal reflection");
+	const Colours c = colours(secret);
+	float ior = 1.5f;
+	std::vector<double> thetas{42.0, 60.0, 85.0};
+	double phi = 2.0;
+	if (secret) {
+		ior = task5::random_ior(*secret);
+		for (double& theta : thetas) theta = task5::uniform(*secret, task5::critical_angle_degrees(ior) + 0.2, 89.5);
+		phi = task5::random_azimuth(*secret);
+	}
+	std::vector<Vec3> out_dirs;
+	for (double theta : thetas) out_dirs.push_back(direction(theta, phi, true));
+	const size_t count = 10000;
+	std::vector<Scatter> samples = student_scatter(BSDF(BSDF_Glass{c.reflectance, c.transmittance, ior}), out_dirs,
+	                                               count, seed_or_public(secret, 56));
+	for (size_t k = 0; k < thetas.size(); k++) {
+		Vec3 out = out_dirs[k];
 		size_t refractions = 0;
-		for (int i = 0; i < 10000; i++) {
-			Scatter s = glass.scatter(rng, out);
-			if (!(s.direction.y * out.y > 0.0f) || glm::length(s.direction - Vec3{-out.x, out.y, -out.z}) > 1e-5f ||
-			    !same(s.attenuation, REFLECTANCE))
+		for (size_t i = 0; i < count; i++) {
+			const Scatter& s = samples[k * count + i];
+			if (!(s.direction.y * out.y > 0.0f) || glm::length(s.direction - reflect(out)) > 1e-5f ||
+			    !same(s.attenuation, c.reflectance))
 				refractions++;
 		}
-		INFO(refractions << " of 10000 samples at " << theta
-		     << " deg inside the glass were not reflect(out_dir) with the reflectance: beyond the critical angle "
-		        "41.81 deg there is total internal reflection (handout §5.2)");
+		INFO(refractions << " of 10000 samples at " << thetas[k] << " deg inside the glass were not reflect(out_dir) "
+		     "with the reflectance: beyond the critical angle " << degrees(task5::critical_angle_degrees(ior))
+		     << " deg there is total internal reflection (handout §5.2)");
 		CHECK(refractions == 0);
 	}
 }
 
 TEST_CASE("Glass with index of refraction 1 is invisible: every sample continues straight, in_dir = -out_dir") {
 	// F = 0 at every angle, so a correct glass never reflects (one float rounding could make F ~1e-16,
-	// which reflects with probability 2^-24 per sample: not in these 1500 fixed-seed samples).
-	BSDF_Glass glass{REFLECTANCE, TRANSMITTANCE, 1.0f};
-	RNG rng(57);
-	for (Vec3 out : {direction(0.0, 0.0), direction(50.0, 1.0), direction(80.0, 2.0, true)}) {
+	// which reflects with probability 2^-24 per sample: not in these 1500 samples, whose generator
+	// keeps its public seed under a grading seed too; only the directions and colours are drawn).
+	std::optional<RNG> secret = secret_inputs("glass, index 1");
+	const Colours c = colours(secret);
+	std::vector<Vec3> dirs{direction(0.0, 0.0), direction(50.0, 1.0), direction(80.0, 2.0, true)};
+	if (secret) {
+		for (Vec3& d : dirs) d = direction(task5::uniform(*secret, 0.0, 85.0), task5::random_azimuth(*secret), d.y < 0.0f);
+	}
+	const size_t count = 500;
+	std::vector<Scatter> samples =
+		student_scatter(BSDF(BSDF_Glass{c.reflectance, c.transmittance, 1.0f}), dirs, count, 57);
+	for (size_t k = 0; k < dirs.size(); k++) {
+		Vec3 out = dirs[k];
 		int wrong = 0;
 		Scatter s;
-		for (int i = 0; i < 500; i++) {
-			s = glass.scatter(rng, out);
-			if (glm::length(s.direction + out) > 1e-5f || !same(s.attenuation, TRANSMITTANCE)) wrong++;
+		for (size_t i = 0; i < count; i++) {
+			s = samples[k * count + i];
+			if (glm::length(s.direction + out) > 1e-5f || !same(s.attenuation, c.transmittance)) wrong++;
 		}
 		INFO(wrong << " of 500 samples of out_dir " << str(out) << " with index 1 did not pass straight through with "
 		     "the transmittance (last: " << str(s.direction) << ", attenuation " << str(s.attenuation) << ")");
