@@ -1,8 +1,9 @@
 #include "image_io.h"
 #include "error.h"
+#include "radiance_hdr.h"
+#include "text_file.h"
 
 // The Debian packages ship compiled implementations of stb and tinyexr: include declarations only.
-#include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 #include <tinyexr.h>
 
@@ -83,15 +84,6 @@ HDR_Image read_exr(const std::string& path) {
 	return image;
 }
 
-HDR_Image read_hdr(const std::string& path) {
-	int w = 0, h = 0, channels_in_file = 0;
-	float* rgb = stbi_loadf(path.c_str(), &w, &h, &channels_in_file, 3);
-	if (!rgb) throw Input_Error(path + ": cannot read Radiance HDR image: " + stbi_failure_reason());
-	HDR_Image image = image_from_floats(rgb, w, h, 3);
-	stbi_image_free(rgb);
-	return image;
-}
-
 } // namespace
 
 void write_png(const std::string& path, const HDR_Image& image, float exposure) {
@@ -123,6 +115,6 @@ HDR_Image read_image(const std::string& path) {
 	if (!std::ifstream(path)) throw Input_Error(path + ": cannot open the file (does it exist?)");
 	std::string ext = lowercase_extension(path);
 	if (ext == ".exr") return read_exr(path);
-	if (ext == ".hdr") return read_hdr(path);
+	if (ext == ".hdr") return decode_radiance_hdr(path, read_text_file(path));
 	throw Input_Error(path + ": unsupported image format '" + ext + "' (expected .exr or .hdr)");
 }
