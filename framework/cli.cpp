@@ -3,6 +3,7 @@
 #include "error.h"
 #include "follow_pixel.h"
 #include "image_io.h"
+#include "output_file.h"
 #include "render.h"
 #include "scene_loader.h"
 #include "terminal.h"
@@ -22,6 +23,14 @@ std::string with_unit(double value) {
 	char text[32];
 	std::snprintf(text, sizeof text, "%.1f%s", value, units[i]);
 	return text;
+}
+
+// Every output is checked before rendering, so that a path that cannot be written fails at once
+// and no file is written.
+void check_outputs(const Cli_Options& options) {
+	for (const std::string& path : {options.png, options.exr, options.variance, options.nan_map}) {
+		if (!path.empty()) check_writable(path);
+	}
 }
 
 // Writes every requested image and returns their paths.
@@ -66,6 +75,7 @@ void report(const Film& film, const Render_Settings& settings, View view, double
 
 void render_and_write(const Scene& scene, const Cli_Options& options, std::ostream& out, std::ostream& err,
                       bool err_is_terminal) {
+	check_outputs(options);
 	Pathtracer pathtracer(scene, override_settings(scene.settings, options), options.view);
 	Progress_Bar progress_bar(err, err_is_terminal && !options.quiet);
 	Render_Options render_options;

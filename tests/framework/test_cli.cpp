@@ -12,6 +12,8 @@
 #include <stb/stb_image.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -338,6 +340,34 @@ TEST_CASE("cli: an image that cannot be written gives an error naming it") {
 	CHECK(result.status != 0);
 	CHECK(result.err.rfind("error: ", 0) == 0);
 	CHECK(result.err.find("blocker/image.png") != std::string::npos);
+}
+
+TEST_CASE("cli: every output path is checked before rendering: one that cannot be written fails and no file is written") {
+	In_Temp_Dir here;
+	std::ofstream("blocker") << "a file where a directory is needed";
+	fs::create_directory("folder.exr");
+	for (std::string bad : {"/proc/x.exr", "blocker/x.exr", "folder.exr"}) {
+		Run result = run({"sphere.json", "--out", "ok.png", "--variance", "new/v.exr", "--exr", bad});
+		INFO("--exr " << bad << "\nstdout: " << result.out << "\nstderr: " << result.err);
+		CHECK(result.status != 0);
+		CHECK(result.err.rfind("error: " + bad + ": ", 0) == 0);
+		CHECK(result.out.empty()); // nothing rendered
+		std::vector<std::string> files = here.new_files();
+		std::sort(files.begin(), files.end());
+		INFO("files: " << joined(files));
+		CHECK(files == std::vector<std::string>{"blocker", "folder.exr"});
+	}
+}
+
+TEST_CASE("cli: an image written to a full device is an error with the system's reason, never 'wrote'") {
+	In_Temp_Dir here;
+	fs::create_symlink("/dev/full", "full.png");
+	Run result = run({"sphere.json", "--out", "full.png"});
+	INFO("stdout: " << result.out << "\nstderr: " << result.err);
+	CHECK(result.status != 0);
+	CHECK(result.err.find("full.png: ") != std::string::npos);
+	CHECK(result.err.find(std::strerror(ENOSPC)) != std::string::npos);
+	CHECK(result.out.find("wrote") == std::string::npos);
 }
 
 TEST_CASE("cli: the debug views eye, normals, bvh and direction show the scene (not a black image)") {
