@@ -93,7 +93,7 @@ const std::vector<Option>& option_table() {
 		 [](auto& o, auto& name, auto& v) { o.nan_map = output_file(name, v, ".png"); }},
 		{"--spp", "N", "samples per pixel, 1 to 1000000",
 		 [](auto& o, auto& name, auto& v) { o.samples = whole_number<uint32_t>(name, v, 1, 1000000); }},
-		{"--width", "W", "image width in pixels, 1 to 16384",
+		{"--width", "W", "image width in pixels, 1 to 16384; the view widens, never stretches",
 		 [](auto& o, auto& name, auto& v) { o.width = whole_number<uint32_t>(name, v, 1, 16384); }},
 		{"--height", "H", "image height in pixels, 1 to 16384",
 		 [](auto& o, auto& name, auto& v) { o.height = whole_number<uint32_t>(name, v, 1, 16384); }},
@@ -244,6 +244,14 @@ void override_environment(Scene& scene, const Cli_Options& options) {
 		                  " is black everywhere, so it cannot be importance-sampled");
 	}
 	*map = Env_Map(std::move(map->image), importance); // builds the sampler only for importance
+}
+
+void override_scene(Scene& scene, const Cli_Options& options) {
+	scene.settings = override_settings(scene.settings, options);
+	if (options.width || options.height) {
+		scene.camera.aspect_ratio = float(scene.settings.width) / float(scene.settings.height);
+	}
+	override_environment(scene, options);
 }
 
 bool wants_help(const std::vector<std::string>& args) {

@@ -36,6 +36,12 @@ Render_Settings override_settings(Render_Settings settings, const Cli_Options& o
 // Input_Error if the scene has no image environment, or importance sampling is asked of a black one.
 void override_environment(Scene& scene, const Cli_Options& options);
 
+// All of the command line's overrides of a loaded scene: override_settings into scene.settings,
+// override_environment, and, when --width or --height give the film another shape, the camera's
+// aspect ratio = width / height with the same vertical field of view (the view widens or narrows;
+// the picture is never stretched).
+void override_scene(Scene& scene, const Cli_Options& options);
+
 // --help: whether it was asked for, and the text.
 bool wants_help(const std::vector<std::string>& args);
 std::string cli_usage(const std::vector<std::string>& args);

@@ -220,6 +220,36 @@ TEST_CASE("cli: --width, --height, --spp and --exposure override the scene for t
 	CHECK(png_bytes("small.png") == png_bytes("expected.png"));
 }
 
+TEST_CASE("cli: --width and --height give the camera the film's aspect ratio, keeping the vertical field of view") {
+	In_Temp_Dir here; // sphere.json: film 16 x 12, vertical_fov 50
+	Scene scene = load_scene("sphere.json");
+	Scene wide = load_scene("sphere.json");
+	override_scene(wide, parse_cli_options({"pathtracer", "sphere.json", "--width", "32"}));
+	CHECK(wide.settings.width == 32u);
+	CHECK(wide.camera.aspect_ratio == 32.0f / 12.0f);
+	CHECK(wide.camera.v_fov == scene.camera.v_fov);
+	CHECK(wide.camera.camera_to_world == scene.camera.camera_to_world);
+	Scene same = load_scene("sphere.json");
+	override_scene(same, parse_cli_options({"pathtracer", "sphere.json", "--spp", "3"}));
+	CHECK(same.camera.aspect_ratio == scene.camera.aspect_ratio);
+
+	// The picture is the one of a scene whose film has that size: the sphere stays round.
+	auto scene_with_film = [](const std::string& size) {
+		const std::string film = R"("width": 16, "height": 12)";
+		std::string text = SPHERE_SCENE;
+		return text.replace(text.find(film), film.size(), size);
+	};
+	std::ofstream("wide.json") << scene_with_film(R"("width": 32, "height": 12)");
+	std::ofstream("tall.json") << scene_with_film(R"("width": 16, "height": 30)");
+	require_render({"sphere.json", "--quiet", "--width", "32", "--exr", "cli_wide.exr"});
+	require_render({"wide.json", "--quiet", "--exr", "scene_wide.exr"});
+	require_render({"sphere.json", "--quiet", "--height", "30", "--exr", "cli_tall.exr"});
+	require_render({"tall.json", "--quiet", "--exr", "scene_tall.exr"});
+	INFO("--width/--height must set Camera::aspect_ratio (framework/cli_options.cpp, override_scene)");
+	CHECK(read_image("cli_wide.exr").pixels == read_image("scene_wide.exr").pixels);
+	CHECK(read_image("cli_tall.exr").pixels == read_image("scene_tall.exr").pixels);
+}
+
 TEST_CASE("cli: --seed chooses the random numbers: same seed same image, another seed another image") {
 	In_Temp_Dir here;
 	require_render({"sphere.json", "--quiet", "--exr", "a.exr", "--seed", "5", "--threads", "1"});
