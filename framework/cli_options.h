@@ -10,7 +10,9 @@
 // What the command line asks for. Unset optionals keep the scene's own settings.
 struct Cli_Options {
 	std::string scene;
-	std::string png, exr, variance, nan_map; // output files; png defaults to out/<scene stem>.png
+	// Output files; png defaults to out/<scene stem>.png, from pathtracer_student to
+	// out/<scene stem>_student.png.
+	std::string png, exr, variance, nan_map;
 	std::optional<uint32_t> samples, width, height, max_depth;
 	std::optional<uint64_t> seed;
 	uint32_t threads = 0; // 0 = all hardware threads

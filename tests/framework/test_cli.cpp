@@ -65,15 +65,19 @@ struct Run {
 	std::string out, err;
 };
 
-// The program with `args` after its name.
-Run run(std::vector<std::string> args, bool err_is_terminal = false) {
-	args.insert(args.begin(), "pathtracer_reference");
+// The program `program` with `args` after its name.
+Run run_as(const std::string& program, std::vector<std::string> args, bool err_is_terminal = false) {
+	args.insert(args.begin(), program);
 	std::ostringstream out, err;
 	Run result;
 	result.status = run_cli(args, out, err, err_is_terminal);
 	result.out = out.str();
 	result.err = err.str();
 	return result;
+}
+
+Run run(const std::vector<std::string>& args, bool err_is_terminal = false) {
+	return run_as("pathtracer_reference", args, err_is_terminal);
 }
 
 std::string joined(const std::vector<std::string>& args) {
@@ -218,6 +222,20 @@ TEST_CASE("cli: --width, --height, --spp and --exposure override the scene for t
 	// The PNG is the EXR through write_png with the same exposure.
 	write_png("expected.png", image, 1.5f);
 	CHECK(png_bytes("small.png") == png_bytes("expected.png"));
+}
+
+TEST_CASE("cli: pathtracer_student's default output is out/<scene>_student.png, so it never replaces the reference's") {
+	In_Temp_Dir here;
+	Run reference = run({"sphere.json"});
+	Run student = run_as("pathtracer_student", {"sphere.json"});
+	CHECK(reference.out.find("wrote out/sphere.png\n") != std::string::npos);
+	CHECK(student.out.find("wrote out/sphere_student.png\n") != std::string::npos);
+	std::vector<std::string> files = here.new_files();
+	std::sort(files.begin(), files.end());
+	CHECK(files == std::vector<std::string>{"out", "out/sphere.png", "out/sphere_student.png"});
+	CHECK(run_as("pathtracer_student", {"--help"}).out.find("out/<scene name>_student.png") != std::string::npos);
+	CHECK(run_as("pathtracer_student", {"sphere.json", "--quiet", "--out", "mine.png"}).status == 0);
+	CHECK(fs::exists("mine.png")); // --out still chooses
 }
 
 TEST_CASE("cli: --width and --height give the camera the film's aspect ratio, keeping the vertical field of view") {
