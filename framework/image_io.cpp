@@ -126,7 +126,9 @@ void write_png(const std::string& path, const HDR_Image& image, float exposure) 
 		for (int c = 0; c < 3; c++) rgb.push_back(png_channel(pixel[c], scale));
 	}
 	std::string bytes;
-	auto append = [](void* to, void* data, int size) { static_cast<std::string*>(to)->append(static_cast<char*>(data), size_t(size)); };
+	auto append = [](void* to, void* data, int size) {
+		static_cast<std::string*>(to)->append(static_cast<char*>(data), size_t(size));
+	};
 	int stride = int(image.w) * 3;
 	if (!stbi_write_png_to_func(append, &bytes, int(image.w), int(image.h), 3, rgb.data(), stride)) {
 		throw Input_Error(path + ": cannot encode the PNG image");

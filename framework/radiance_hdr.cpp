@@ -89,7 +89,8 @@ void read_resolution(Reader& in, uint32_t& width, uint32_t& height) {
 	width = dimension(w);
 	height = dimension(h);
 	if (!found || minus_y != "-Y" || plus_x != "+X" || !rest.empty() || width == 0 || height == 0) {
-		in.fail("unsupported resolution line \"" + line + "\" (expected \"-Y height +X width\", each from 1 to 65535, e.g. -Y 512 +X 1024)");
+		in.fail("unsupported resolution line \"" + line +
+		        "\" (expected \"-Y height +X width\", each from 1 to 65535, e.g. -Y 512 +X 1024)");
 	}
 }
 

@@ -390,7 +390,7 @@ TEST_CASE("cli: an image that cannot be written gives an error naming it") {
 	CHECK(result.err.find("blocker/image.png") != std::string::npos);
 }
 
-TEST_CASE("cli: every output path is checked before rendering: one that cannot be written fails and no file is written") {
+TEST_CASE("cli: every output path is checked before rendering: a bad one fails and no file is written") {
 	In_Temp_Dir here;
 	std::ofstream("blocker") << "a file where a directory is needed";
 	fs::create_directory("folder.exr");
