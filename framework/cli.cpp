@@ -3,6 +3,7 @@
 #include "error.h"
 #include "follow_pixel.h"
 #include "image_io.h"
+#include "output_file.h"
 #include "render.h"
 #include "scene_loader.h"
 #include "terminal.h"
@@ -22,6 +23,14 @@ std::string with_unit(double value) {
 	char text[32];
 	std::snprintf(text, sizeof text, "%.1f%s", value, units[i]);
 	return text;
+}
+
+// Every output is checked before rendering, so that a path that cannot be written fails at once
+// and no file is written.
+void check_outputs(const Cli_Options& options) {
+	for (const std::string& path : {options.png, options.exr, options.variance, options.nan_map}) {
+		if (!path.empty()) check_writable(path);
+	}
 }
 
 // Writes every requested image and returns their paths.
@@ -66,7 +75,8 @@ void report(const Film& film, const Render_Settings& settings, View view, double
 
 void render_and_write(const Scene& scene, const Cli_Options& options, std::ostream& out, std::ostream& err,
                       bool err_is_terminal) {
-	Pathtracer pathtracer(scene, override_settings(scene.settings, options), options.view);
+	check_outputs(options);
+	Pathtracer pathtracer(scene, scene.settings, options.view);
 	Progress_Bar progress_bar(err, err_is_terminal && !options.quiet);
 	Render_Options render_options;
 	render_options.threads = options.threads;
@@ -84,7 +94,7 @@ void render_and_write(const Scene& scene, const Cli_Options& options, std::ostre
 
 // --follow-pixel: the same paths the renderer takes for that pixel, printed ray by ray.
 void follow(const Scene& scene, const Cli_Options& options, std::ostream& out) {
-	Pathtracer pathtracer(scene, override_settings(scene.settings, options), options.view);
+	Pathtracer pathtracer(scene, scene.settings, options.view);
 	auto [x, y] = *options.follow_pixel;
 	if (x >= pathtracer.settings.width || y >= pathtracer.settings.height) {
 		throw Input_Error("--follow-pixel: pixel (" + std::to_string(x) + ", " + std::to_string(y) +
@@ -104,7 +114,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
 		}
 		Cli_Options options = parse_cli_options(args);
 		Scene scene = load_scene(options.scene);
-		override_environment(scene, options);
+		override_scene(scene, options);
 		if (options.follow_pixel) {
 			follow(scene, options, out);
 		} else {

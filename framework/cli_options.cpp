@@ -83,7 +83,9 @@ struct Option {
 
 const std::vector<Option>& option_table() {
 	static const std::vector<Option> table{
-		{"--out", "FILE.png", "the image to look at: exposure, sRGB, 8 bits (default out/<scene name>.png)",
+		{"--out", "FILE.png",
+		 "the image to look at: exposure, sRGB, 8 bits (default out/<scene name>.png; from pathtracer_student "
+		 "out/<scene name>_student.png)",
 		 [](auto& o, auto& name, auto& v) { o.png = output_file(name, v, ".png"); }},
 		{"--exr", "FILE.exr", "also write the linear image (the per-pixel mean) as 32-bit floats",
 		 [](auto& o, auto& name, auto& v) { o.exr = output_file(name, v, ".exr"); }},
@@ -93,7 +95,7 @@ const std::vector<Option>& option_table() {
 		 [](auto& o, auto& name, auto& v) { o.nan_map = output_file(name, v, ".png"); }},
 		{"--spp", "N", "samples per pixel, 1 to 1000000",
 		 [](auto& o, auto& name, auto& v) { o.samples = whole_number<uint32_t>(name, v, 1, 1000000); }},
-		{"--width", "W", "image width in pixels, 1 to 16384",
+		{"--width", "W", "image width in pixels, 1 to 16384; the view widens, never stretches",
 		 [](auto& o, auto& name, auto& v) { o.width = whole_number<uint32_t>(name, v, 1, 16384); }},
 		{"--height", "H", "image height in pixels, 1 to 16384",
 		 [](auto& o, auto& name, auto& v) { o.height = whole_number<uint32_t>(name, v, 1, 16384); }},
@@ -138,6 +140,13 @@ const Option* find_option(const std::string& name) {
 
 std::string program_name(const std::vector<std::string>& args) {
 	return args.empty() ? "pathtracer" : std::filesystem::path(args[0]).filename().string();
+}
+
+// out/<scene name>.png, or out/<scene name>_student.png from the student's renderer, so that its
+// render never replaces the reference renderer's (./lab render-student beside ./lab render).
+std::string default_png(const std::string& program, const std::string& scene) {
+	std::string suffix = program == "pathtracer_student" ? "_student" : "";
+	return "out/" + std::filesystem::path(scene).stem().string() + suffix + ".png";
 }
 
 std::string usage(const std::string& program) {
@@ -212,7 +221,7 @@ Cli_Options parse_cli_options(const std::vector<std::string>& args) {
 	if (options.scene.empty()) {
 		throw Input_Error("no scene file given (usage: " + program_name(args) + " SCENE.json [options])");
 	}
-	if (options.png.empty()) options.png = "out/" + std::filesystem::path(options.scene).stem().string() + ".png";
+	if (options.png.empty()) options.png = default_png(program_name(args), options.scene);
 
 	require_distinct_outputs(options);
 	return options;
@@ -244,6 +253,14 @@ void override_environment(Scene& scene, const Cli_Options& options) {
 		                  " is black everywhere, so it cannot be importance-sampled");
 	}
 	*map = Env_Map(std::move(map->image), importance); // builds the sampler only for importance
+}
+
+void override_scene(Scene& scene, const Cli_Options& options) {
+	scene.settings = override_settings(scene.settings, options);
+	if (options.width || options.height) {
+		scene.camera.aspect_ratio = float(scene.settings.width) / float(scene.settings.height);
+	}
+	override_environment(scene, options);
 }
 
 bool wants_help(const std::vector<std::string>& args) {

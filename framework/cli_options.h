@@ -10,7 +10,9 @@
 // What the command line asks for. Unset optionals keep the scene's own settings.
 struct Cli_Options {
 	std::string scene;
-	std::string png, exr, variance, nan_map; // output files; png defaults to out/<scene stem>.png
+	// Output files; png defaults to out/<scene stem>.png, from pathtracer_student to
+	// out/<scene stem>_student.png.
+	std::string png, exr, variance, nan_map;
 	std::optional<uint32_t> samples, width, height, max_depth;
 	std::optional<uint64_t> seed;
 	uint32_t threads = 0; // 0 = all hardware threads
@@ -35,6 +37,12 @@ Render_Settings override_settings(Render_Settings settings, const Cli_Options& o
 // --env-sampling: rebuilds the scene's image environment as uniformly or importance-sampled. Throws
 // Input_Error if the scene has no image environment, or importance sampling is asked of a black one.
 void override_environment(Scene& scene, const Cli_Options& options);
+
+// All of the command line's overrides of a loaded scene: override_settings into scene.settings,
+// override_environment, and, when --width or --height give the film another shape, the camera's
+// aspect ratio = width / height with the same vertical field of view (the view widens or narrows;
+// the picture is never stretched).
+void override_scene(Scene& scene, const Cli_Options& options);
 
 // --help: whether it was asked for, and the text.
 bool wants_help(const std::vector<std::string>& args);

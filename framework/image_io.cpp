@@ -1,14 +1,17 @@
 #include "image_io.h"
 #include "error.h"
+#include "output_file.h"
+#include "radiance_hdr.h"
+#include "text_file.h"
 
 // The Debian packages ship compiled implementations of stb and tinyexr: include declarations only.
-#include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 #include <tinyexr.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <vector>
@@ -30,22 +33,12 @@ uint8_t png_channel(float linear, float scale) {
 	return uint8_t(std::lround(std::min(value, 1.0f) * 255.0f));
 }
 
-void create_parent_directory(const std::string& path) {
-	fs::path parent = fs::path(path).parent_path();
-	if (parent.empty()) return;
-	std::error_code error;
-	fs::create_directories(parent, error);
-	if (error) throw Input_Error(path + ": cannot create directory " + parent.string() + ": " + error.message());
-}
-
-// Checks what every writer needs: a non-empty image (stb and tinyexr fail badly on 0 x h) and the
-// directory to put it in.
-void prepare_to_write(const std::string& path, const HDR_Image& image) {
+// stb and tinyexr fail badly on an image of 0 x h pixels.
+void require_pixels(const std::string& path, const HDR_Image& image) {
 	if (image.w == 0 || image.h == 0) {
 		throw Input_Error(path + ": cannot write an empty image (" + std::to_string(image.w) + " x " +
 		                  std::to_string(image.h) + " pixels)");
 	}
-	create_parent_directory(path);
 }
 
 std::string lowercase_extension(const std::string& path) {
@@ -83,46 +76,75 @@ HDR_Image read_exr(const std::string& path) {
 	return image;
 }
 
-HDR_Image read_hdr(const std::string& path) {
-	int w = 0, h = 0, channels_in_file = 0;
-	float* rgb = stbi_loadf(path.c_str(), &w, &h, &channels_in_file, 3);
-	if (!rgb) throw Input_Error(path + ": cannot read Radiance HDR image: " + stbi_failure_reason());
-	HDR_Image image = image_from_floats(rgb, w, h, 3);
-	stbi_image_free(rgb);
-	return image;
+// The image as the bytes of an OpenEXR file: 32-bit float channels B, G, R (the order most viewers
+// expect), uncompressed below 16 x 16 pixels and ZIP-compressed above, as tinyexr's SaveEXR writes.
+std::string encode_exr(const std::string& path, const HDR_Image& image) {
+	size_t count = image.pixels.size();
+	std::vector<float> planes[3]; // B, G, R
+	for (int c = 0; c < 3; c++) {
+		planes[c].resize(count);
+		for (size_t i = 0; i < count; i++) planes[c][i] = image.pixels[i][2 - c];
+	}
+	float* plane_pointers[3] = {planes[0].data(), planes[1].data(), planes[2].data()};
+	EXRChannelInfo channels[3]{};
+	std::strcpy(channels[0].name, "B");
+	std::strcpy(channels[1].name, "G");
+	std::strcpy(channels[2].name, "R");
+	int float_type[3] = {TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT};
+
+	EXRHeader header;
+	InitEXRHeader(&header);
+	header.num_channels = 3;
+	header.channels = channels;
+	header.pixel_types = float_type;
+	header.requested_pixel_types = float_type;
+	header.compression_type = image.w < 16 && image.h < 16 ? TINYEXR_COMPRESSIONTYPE_NONE : TINYEXR_COMPRESSIONTYPE_ZIP;
+	EXRImage exr;
+	InitEXRImage(&exr);
+	exr.num_channels = 3;
+	exr.images = reinterpret_cast<unsigned char**>(plane_pointers);
+	exr.width = int(image.w);
+	exr.height = int(image.h);
+
+	unsigned char* memory = nullptr;
+	const char* message = nullptr;
+	size_t size = SaveEXRImageToMemory(&exr, &header, &memory, &message);
+	if (size == 0) throw Input_Error(path + ": cannot encode the EXR image: " + take_exr_message(message));
+	std::string bytes(reinterpret_cast<char*>(memory), size);
+	std::free(memory);
+	return bytes;
 }
 
 } // namespace
 
 void write_png(const std::string& path, const HDR_Image& image, float exposure) {
-	prepare_to_write(path, image);
+	require_pixels(path, image);
 	float scale = std::exp2(exposure);
-	std::vector<uint8_t> bytes;
-	bytes.reserve(image.pixels.size() * 3);
+	std::vector<uint8_t> rgb;
+	rgb.reserve(image.pixels.size() * 3);
 	for (const Spectrum& pixel : image.pixels) {
-		for (int c = 0; c < 3; c++) bytes.push_back(png_channel(pixel[c], scale));
+		for (int c = 0; c < 3; c++) rgb.push_back(png_channel(pixel[c], scale));
 	}
+	std::string bytes;
+	auto append = [](void* to, void* data, int size) {
+		static_cast<std::string*>(to)->append(static_cast<char*>(data), size_t(size));
+	};
 	int stride = int(image.w) * 3;
-	if (!stbi_write_png(path.c_str(), int(image.w), int(image.h), 3, bytes.data(), stride)) {
-		throw Input_Error(path + ": cannot write PNG image");
+	if (!stbi_write_png_to_func(append, &bytes, int(image.w), int(image.h), 3, rgb.data(), stride)) {
+		throw Input_Error(path + ": cannot encode the PNG image");
 	}
+	write_file(path, bytes);
 }
 
 void write_exr(const std::string& path, const HDR_Image& image) {
-	prepare_to_write(path, image);
-	const char* message = nullptr;
-	static_assert(sizeof(Spectrum) == 3 * sizeof(float), "HDR_Image pixels must be packed RGB floats");
-	const float* rgb = reinterpret_cast<const float*>(image.pixels.data());
-	// 3 components, stored as 32-bit floats (save_as_fp16 = 0): linear data, no loss.
-	if (SaveEXR(rgb, int(image.w), int(image.h), 3, 0, path.c_str(), &message) != TINYEXR_SUCCESS) {
-		throw Input_Error(path + ": cannot write EXR image: " + take_exr_message(message));
-	}
+	require_pixels(path, image);
+	write_file(path, encode_exr(path, image));
 }
 
 HDR_Image read_image(const std::string& path) {
 	if (!std::ifstream(path)) throw Input_Error(path + ": cannot open the file (does it exist?)");
 	std::string ext = lowercase_extension(path);
 	if (ext == ".exr") return read_exr(path);
-	if (ext == ".hdr") return read_hdr(path);
+	if (ext == ".hdr") return decode_radiance_hdr(path, read_text_file(path));
 	throw Input_Error(path + ": unsupported image format '" + ext + "' (expected .exr or .hdr)");
 }

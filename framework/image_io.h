@@ -1,6 +1,7 @@
 #pragma once
 // Image files. PNG is for looking at (exposure, then the sRGB curve, 8 bits); EXR holds linear
 // float data (renders, variances, references). Reading accepts .exr and Radiance .hdr.
+// Writing is all or nothing (output_file.h): a failed write leaves no file and keeps the old one.
 // All functions throw Input_Error with the file name on failure.
 #include "hdr_image.h"
 

@@ -100,6 +100,24 @@ std::string number_text(const Json& value) {
 	return s.str();
 }
 
+// Appends the compact JSON text of `value` to `text` while `text` has at most `limit` characters;
+// false once it is longer. Each level of nesting adds a character before going deeper, so the
+// recursion is at most `limit` deep (dump() of an array nested 70 000 deep overflows the stack).
+bool append_short_text(const Json& value, std::string& text, size_t limit) {
+	if (!value.is_structured()) {
+		text += value.dump();
+		return text.size() <= limit;
+	}
+	text += value.is_array() ? '[' : '{';
+	for (auto item = value.begin(); item != value.end(); ++item) {
+		if (item != value.begin()) text += ',';
+		if (value.is_object()) text += Json(item.key()).dump() + ':';
+		if (text.size() > limit || !append_short_text(*item, text, limit)) return false;
+	}
+	text += value.is_array() ? ']' : '}';
+	return text.size() <= limit;
+}
+
 // "from 0 to 1", or "of at least 0" when there is no upper limit.
 std::string range_text(float min, float max) {
 	std::ostringstream s;
@@ -148,9 +166,9 @@ std::string Json_Element::found() const {
 		return "\"" + s + "\"";
 	}
 	case Json::value_t::array: {
-		std::string dump = value->dump();
-		if (dump.size() <= 60) return dump;
-		return "an array of " + std::to_string(value->size()) + " elements";
+		std::string text;
+		if (append_short_text(*value, text, 60)) return text;
+		return "an array of " + std::to_string(value->size()) + (value->size() == 1 ? " element" : " elements");
 	}
 	case Json::value_t::object: return "an object";
 	default: return "a value of type " + std::string(value->type_name());

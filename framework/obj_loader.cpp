@@ -1,6 +1,7 @@
 #include "obj_loader.h"
 #include "error.h"
 #include "mesh_builder.h"
+#include "obj_check.h"
 #include "text_file.h"
 
 #include <tiny_obj_loader.h>
@@ -10,19 +11,6 @@ namespace {
 // The first line of a tinyobjloader message (they end with newlines and may repeat).
 std::string first_line(const std::string& message) {
 	return message.substr(0, message.find('\n'));
-}
-
-// tinyobjloader reports faces with indices beyond the file's vertices only as warnings, and drops
-// such polygons while triangulating: we refuse them instead.
-void reject_bad_index_warnings(const std::string& path, const std::string& warnings) {
-	for (const char* sign : {"invalid vertex index", "out of bounds"}) {
-		size_t at = warnings.find(sign);
-		if (at == std::string::npos) continue;
-		size_t line_start = warnings.rfind('\n', at);
-		line_start = line_start == std::string::npos ? 0 : line_start + 1;
-		throw Input_Error(path + ": a face refers to data that the file does not define (" +
-		                  first_line(warnings.substr(line_start)) + ")");
-	}
 }
 
 // Flat x, y, z arrays as points; every coordinate must be finite.
@@ -37,8 +25,8 @@ std::vector<Vec3> to_points(const std::string& path, const std::vector<tinyobj::
 	return points;
 }
 
-// A corner of a triangle, with its indices checked against the file's vertex and normal counts.
-// (Indices are reported 1-based, as in the file's "f" lines.)
+// A corner of a triangle. check_obj_text has checked the indices as written; this check guards the
+// arrays against any index tinyobjloader resolves differently. (1-based, as in the "f" lines.)
 Mesh_Corner to_corner(const std::string& path, const tinyobj::index_t& index, size_t face,
                       const std::vector<Vec3>& positions, const std::vector<Vec3>& normals) {
 	auto fail = [&](const char* what, int i, size_t count) {
@@ -61,6 +49,7 @@ Mesh_Corner to_corner(const std::string& path, const tinyobj::index_t& index, si
 
 std::vector<Triangle> load_obj(const std::string& path) {
 	std::string text = read_text_file(path);
+	check_obj_text(path, text); // numbers and indices as written, with their line
 	tinyobj::ObjReaderConfig config;
 	config.triangulate = true;
 	config.vertex_color = false;
@@ -85,7 +74,6 @@ std::vector<Triangle> load_obj(const std::string& path) {
 			first += face_size;
 		}
 	}
-	reject_bad_index_warnings(path, reader.Warning()); // faces tinyobjloader dropped
 	if (corners.empty()) {
 		throw Input_Error(path + ": no triangles (expected faces \"f a b c ...\" with three or more vertices)");
 	}

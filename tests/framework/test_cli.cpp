@@ -12,6 +12,8 @@
 #include <stb/stb_image.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -63,15 +65,19 @@ struct Run {
 	std::string out, err;
 };
 
-// The program with `args` after its name.
-Run run(std::vector<std::string> args, bool err_is_terminal = false) {
-	args.insert(args.begin(), "pathtracer_reference");
+// The program `program` with `args` after its name.
+Run run_as(const std::string& program, std::vector<std::string> args, bool err_is_terminal = false) {
+	args.insert(args.begin(), program);
 	std::ostringstream out, err;
 	Run result;
 	result.status = run_cli(args, out, err, err_is_terminal);
 	result.out = out.str();
 	result.err = err.str();
 	return result;
+}
+
+Run run(const std::vector<std::string>& args, bool err_is_terminal = false) {
+	return run_as("pathtracer_reference", args, err_is_terminal);
 }
 
 std::string joined(const std::vector<std::string>& args) {
@@ -218,6 +224,50 @@ TEST_CASE("cli: --width, --height, --spp and --exposure override the scene for t
 	CHECK(png_bytes("small.png") == png_bytes("expected.png"));
 }
 
+TEST_CASE("cli: pathtracer_student's default output is out/<scene>_student.png, so it never replaces the reference's") {
+	In_Temp_Dir here;
+	Run reference = run({"sphere.json"});
+	Run student = run_as("pathtracer_student", {"sphere.json"});
+	CHECK(reference.out.find("wrote out/sphere.png\n") != std::string::npos);
+	CHECK(student.out.find("wrote out/sphere_student.png\n") != std::string::npos);
+	std::vector<std::string> files = here.new_files();
+	std::sort(files.begin(), files.end());
+	CHECK(files == std::vector<std::string>{"out", "out/sphere.png", "out/sphere_student.png"});
+	CHECK(run_as("pathtracer_student", {"--help"}).out.find("out/<scene name>_student.png") != std::string::npos);
+	CHECK(run_as("pathtracer_student", {"sphere.json", "--quiet", "--out", "mine.png"}).status == 0);
+	CHECK(fs::exists("mine.png")); // --out still chooses
+}
+
+TEST_CASE("cli: --width and --height give the camera the film's aspect ratio, keeping the vertical field of view") {
+	In_Temp_Dir here; // sphere.json: film 16 x 12, vertical_fov 50
+	Scene scene = load_scene("sphere.json");
+	Scene wide = load_scene("sphere.json");
+	override_scene(wide, parse_cli_options({"pathtracer", "sphere.json", "--width", "32"}));
+	CHECK(wide.settings.width == 32u);
+	CHECK(wide.camera.aspect_ratio == 32.0f / 12.0f);
+	CHECK(wide.camera.v_fov == scene.camera.v_fov);
+	CHECK(wide.camera.camera_to_world == scene.camera.camera_to_world);
+	Scene same = load_scene("sphere.json");
+	override_scene(same, parse_cli_options({"pathtracer", "sphere.json", "--spp", "3"}));
+	CHECK(same.camera.aspect_ratio == scene.camera.aspect_ratio);
+
+	// The picture is the one of a scene whose film has that size: the sphere stays round.
+	auto scene_with_film = [](const std::string& size) {
+		const std::string film = R"("width": 16, "height": 12)";
+		std::string text = SPHERE_SCENE;
+		return text.replace(text.find(film), film.size(), size);
+	};
+	std::ofstream("wide.json") << scene_with_film(R"("width": 32, "height": 12)");
+	std::ofstream("tall.json") << scene_with_film(R"("width": 16, "height": 30)");
+	require_render({"sphere.json", "--quiet", "--width", "32", "--exr", "cli_wide.exr"});
+	require_render({"wide.json", "--quiet", "--exr", "scene_wide.exr"});
+	require_render({"sphere.json", "--quiet", "--height", "30", "--exr", "cli_tall.exr"});
+	require_render({"tall.json", "--quiet", "--exr", "scene_tall.exr"});
+	INFO("--width/--height must set Camera::aspect_ratio (framework/cli_options.cpp, override_scene)");
+	CHECK(read_image("cli_wide.exr").pixels == read_image("scene_wide.exr").pixels);
+	CHECK(read_image("cli_tall.exr").pixels == read_image("scene_tall.exr").pixels);
+}
+
 TEST_CASE("cli: --seed chooses the random numbers: same seed same image, another seed another image") {
 	In_Temp_Dir here;
 	require_render({"sphere.json", "--quiet", "--exr", "a.exr", "--seed", "5", "--threads", "1"});
@@ -338,6 +388,34 @@ TEST_CASE("cli: an image that cannot be written gives an error naming it") {
 	CHECK(result.status != 0);
 	CHECK(result.err.rfind("error: ", 0) == 0);
 	CHECK(result.err.find("blocker/image.png") != std::string::npos);
+}
+
+TEST_CASE("cli: every output path is checked before rendering: a bad one fails and no file is written") {
+	In_Temp_Dir here;
+	std::ofstream("blocker") << "a file where a directory is needed";
+	fs::create_directory("folder.exr");
+	for (std::string bad : {"/proc/x.exr", "blocker/x.exr", "folder.exr"}) {
+		Run result = run({"sphere.json", "--out", "ok.png", "--variance", "new/v.exr", "--exr", bad});
+		INFO("--exr " << bad << "\nstdout: " << result.out << "\nstderr: " << result.err);
+		CHECK(result.status != 0);
+		CHECK(result.err.rfind("error: " + bad + ": ", 0) == 0);
+		CHECK(result.out.empty()); // nothing rendered
+		std::vector<std::string> files = here.new_files();
+		std::sort(files.begin(), files.end());
+		INFO("files: " << joined(files));
+		CHECK(files == std::vector<std::string>{"blocker", "folder.exr"});
+	}
+}
+
+TEST_CASE("cli: an image written to a full device is an error with the system's reason, never 'wrote'") {
+	In_Temp_Dir here;
+	fs::create_symlink("/dev/full", "full.png");
+	Run result = run({"sphere.json", "--out", "full.png"});
+	INFO("stdout: " << result.out << "\nstderr: " << result.err);
+	CHECK(result.status != 0);
+	CHECK(result.err.find("full.png: ") != std::string::npos);
+	CHECK(result.err.find(std::strerror(ENOSPC)) != std::string::npos);
+	CHECK(result.out.find("wrote") == std::string::npos);
 }
 
 TEST_CASE("cli: the debug views eye, normals, bvh and direction show the scene (not a black image)") {

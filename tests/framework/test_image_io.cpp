@@ -2,6 +2,7 @@
 // sRGB curve, .hdr files can be read, and every failure names the file.
 #include "error.h"
 #include "image_io.h"
+#include "output_file.h"
 #include "temp_dir.h"
 
 #include <catch2/catch.hpp>
@@ -9,9 +10,14 @@
 #include <stb/stb_image_write.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <vector>
+
+#include <sys/resource.h>
 
 namespace {
 
@@ -55,6 +61,54 @@ std::vector<int> png_values(const Temp_Dir& dir, const std::vector<float>& linea
 bool same_bits(float a, float b) {
 	return std::memcmp(&a, &b, sizeof(float)) == 0;
 }
+
+// An image that no encoder can compress much: each channel a hash of its index.
+HDR_Image noise(uint32_t w, uint32_t h) {
+	HDR_Image image(w, h);
+	uint32_t state = 12345;
+	for (Spectrum& pixel : image.pixels) {
+		for (int c = 0; c < 3; c++) {
+			state = state * 1664525u + 1013904223u; // a linear congruential generator (Numerical Recipes)
+			pixel[c] = float(state >> 8) / float(1u << 24);
+		}
+	}
+	return image;
+}
+
+std::string file_bytes(const std::string& path) {
+	std::ifstream in(path, std::ios::binary);
+	return std::string{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::vector<std::string> files_in(const Temp_Dir& dir) {
+	std::vector<std::string> names;
+	for (const auto& entry : std::filesystem::recursive_directory_iterator(dir.path())) {
+		names.push_back(std::filesystem::relative(entry.path(), dir.path()).string());
+	}
+	std::sort(names.begin(), names.end());
+	return names;
+}
+
+// While it lives, no file of this process may grow beyond `bytes`: a write past it fails with
+// EFBIG ("File too large"), as a full disk fails with ENOSPC.
+class File_Size_Limit {
+public:
+	explicit File_Size_Limit(rlim_t bytes) {
+		getrlimit(RLIMIT_FSIZE, &previous);
+		previous_handler = std::signal(SIGXFSZ, SIG_IGN); // else the kernel ends the process
+		rlimit limit = previous;
+		limit.rlim_cur = bytes;
+		REQUIRE(setrlimit(RLIMIT_FSIZE, &limit) == 0);
+	}
+	~File_Size_Limit() {
+		setrlimit(RLIMIT_FSIZE, &previous);
+		std::signal(SIGXFSZ, previous_handler);
+	}
+
+private:
+	rlimit previous{};
+	void (*previous_handler)(int) = nullptr;
+};
 
 } // namespace
 
@@ -182,4 +236,50 @@ TEST_CASE("writing an empty image (width or height 0) throws Input_Error naming 
 	CHECK_THROWS_WITH(write_exr(exr, HDR_Image(3, 0)), Catch::Contains(exr));
 	CHECK_FALSE(std::filesystem::exists(png));
 	CHECK_FALSE(std::filesystem::exists(exr));
+}
+
+TEST_CASE("writing an image to a full device fails with the system's reason; the device stays a device") {
+	Temp_Dir dir;
+	std::string full_png = dir.file("full.png"), full_exr = dir.file("full.exr");
+	std::filesystem::create_symlink("/dev/full", full_png);
+	std::filesystem::create_symlink("/dev/full", full_exr);
+	std::string reason = std::strerror(ENOSPC); // "No space left on device"
+	CHECK_THROWS_WITH(write_png(full_png, noise(8, 8)), Catch::Contains(full_png) && Catch::Contains(reason));
+	CHECK_THROWS_WITH(write_exr(full_exr, noise(8, 8)), Catch::Contains(full_exr) && Catch::Contains(reason));
+	CHECK(std::filesystem::is_symlink(full_png));
+	CHECK(std::filesystem::is_character_file("/dev/full"));
+}
+
+TEST_CASE("an image write cut short leaves no file behind and keeps the file it was to replace") {
+	Temp_Dir dir;
+	std::string png = dir.file("image.png"), exr = dir.file("image.exr");
+	write_png(png, HDR_Image(2, 2, Spectrum(0.5f)));
+	write_exr(exr, HDR_Image(2, 2, Spectrum(0.5f)));
+	std::string old_png = file_bytes(png), old_exr = file_bytes(exr);
+	std::vector<std::string> before = files_in(dir);
+	std::string reason = std::strerror(EFBIG);
+	HDR_Image large = noise(256, 256); // about 200 kB as PNG and as EXR, even compressed
+	{
+		File_Size_Limit limit(64 * 1024);
+		CHECK_THROWS_WITH(write_png(png, large), Catch::Contains(png) && Catch::Contains(reason));
+		CHECK_THROWS_WITH(write_exr(exr, large), Catch::Contains(exr) && Catch::Contains(reason));
+		CHECK_THROWS_WITH(write_png(dir.file("new/image.png"), large), Catch::Contains(reason));
+	}
+	CHECK(file_bytes(png) == old_png);
+	CHECK(file_bytes(exr) == old_exr);
+	CHECK(files_in(dir) == before); // no temporary file, no new file or folder
+}
+
+TEST_CASE("check_writable fails for a path that cannot be written, and leaves nothing behind") {
+	Temp_Dir dir;
+	std::ofstream(dir.file("blocker")) << "a file where a directory is needed";
+	std::filesystem::create_directory(dir.file("folder.png"));
+	std::vector<std::string> before = files_in(dir);
+	check_writable(dir.file("fine.png"));
+	check_writable(dir.file("a/b/c/fine.png")); // folders it would create
+	CHECK_THROWS_WITH(check_writable(dir.file("blocker/image.png")),
+	                  Catch::Contains("blocker/image.png") && Catch::Contains(std::strerror(ENOTDIR)));
+	CHECK_THROWS_WITH(check_writable(dir.file("folder.png")), Catch::Contains("folder.png: is a folder"));
+	CHECK_THROWS_WITH(check_writable("/proc/image.exr"), Catch::Contains("/proc/image.exr"));
+	CHECK(files_in(dir) == before);
 }

@@ -125,22 +125,46 @@ TEST_CASE("load_obj rejects a missing file, a file without triangles and bad ind
 	SECTION("an empty file") {
 		require_obj_error("", "no triangles");
 	}
-	SECTION("a vertex index beyond the vertices") {
-		require_obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", "vertex");
-	}
-	SECTION("a relative (negative) index before the first vertex") {
-		require_obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -5\n", "vertex");
-	}
-	SECTION("index 0 (OBJ indices start at 1)") {
-		require_obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "not a valid OBJ file");
-	}
-	SECTION("a normal index beyond the normals") {
-		require_obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//4\n", "normal");
-	}
-	SECTION("a quad with a bad index (tinyobjloader would drop it silently)") {
-		require_obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 1 2 4 7\n", "does not define");
-	}
-	SECTION("a vertex coordinate that overflows a float") {
-		require_obj_error("v 1e999 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "finite");
-	}
+}
+
+TEST_CASE("load_obj names the line and the index as written when a face refers to nothing", "[obj][errors]") {
+	const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+	const std::string range = "(expected 1 to 3, or -1 to -3 counting back from this line)";
+	require_obj_error(triangle + "f 1 2 9\n", "line 4: face index 9 refers to a vertex the file does not define " + range);
+	// tinyobjloader resolves -7 to 3 - 7 = -4 and used to be reported as "vertex -3".
+	require_obj_error(triangle + "f 1 2 -7\n", "line 4: face index -7 refers to a vertex the file does not define " + range);
+	require_obj_error(triangle + "f 0 1 2\n", "line 4: face index 0 refers to a vertex");
+	require_obj_error("v 0 0 0\nf 1 -1 -2\nv 1 0 0\nv 0 1 0\n",
+	                  "line 2: face index -2 refers to a vertex the file does not define (expected 1 to 3, or -1 to -1 counting");
+	require_obj_error(triangle + "vn 0 0 1\nf 1//1 2//1 3//4\n", "line 5: face index 4 refers to a normal");
+	require_obj_error(triangle + "f 1/1 2/1 3/1\n", "line 4: face index 1 refers to a texture coordinate the file does "
+	                                                 "not define (the file defines no texture coordinates)");
+	// A quad with a bad index, which tinyobjloader would drop silently.
+	require_obj_error(triangle + "v 1 1 0\nf 1 2 3\nf 1 2 4 7\n", "line 6: face index 7 refers to a vertex");
+	require_obj_error(triangle + "f 1 2 x\n", "line 4: face index 'x' is not a whole number");
+	require_obj_error(triangle + "f 1 2 3.5\n", "line 4: face index '3.5' is not a whole number");
+	require_obj_error(triangle + "f 1 2 3/1/1/1\n", "line 4: '3/1/1/1' is not a face corner");
+}
+
+TEST_CASE("load_obj names the line and the value of a coordinate that is not a finite number", "[obj][errors]") {
+	const std::string rest = "v 1 0 0\nv 0 1 0\nf 1 2 3\n";
+	// tinyobjloader reads "nan" and "x" as 0.
+	require_obj_error("v nan 0 0\n" + rest, "line 1: vertex coordinate 'nan' is not a finite number (expected \"v x y z\")");
+	require_obj_error("v 0 x 0\n" + rest, "line 1: vertex coordinate 'x' is not a finite number");
+	require_obj_error("v 1e999 0 0\n" + rest, "line 1: vertex coordinate '1e999' is not a finite number");
+	require_obj_error("v 0 0 4e38\n" + rest, "line 1: vertex coordinate '4e38'"); // beyond a float
+	require_obj_error("v 0 0\n" + rest, "line 1: expected three coordinates \"v x y z\", found 2");
+	require_obj_error("v 0 0 0\n" + rest + "vn 0 inf 1\n", "line 5: normal coordinate 'inf' is not a finite number");
+	// Lines end with \n, \r\n or a lone \r, as tinyobjloader counts them.
+	require_obj_error("# a mesh\r\nv 0 0 0\rv 1 0 0\nv 0 -nan 0\n", "line 4: vertex coordinate '-nan'");
+}
+
+TEST_CASE("load_obj reads relative (negative) indices, signs and extra vertex values as OBJ defines them", "[obj]") {
+	Temp_Dir dir;
+	std::vector<Triangle> absolute = load_text(dir, "v 0 0 0 1\nv +1 0 0\nv 0 1.5e0 0\nf 1 2 3\n");
+	std::vector<Triangle> relative = load_text(dir, "v 0 0 0 1\nv +1 0 0\nv 0 1.5e0 0\nf -3 -2 -1\n");
+	REQUIRE(absolute.size() == 1);
+	REQUIRE(relative.size() == 1);
+	require_near(relative[0].v1.position, Vec3{1.0f, 0.0f, 0.0f}, "vertex -2 counted back from line 4");
+	require_near(relative[0].v2.position, absolute[0].v2.position, "vertex -1 is vertex 3");
 }

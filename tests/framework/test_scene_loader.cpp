@@ -472,6 +472,22 @@ TEST_CASE("A number too large for a float is an error, never an infinity", "[sce
 	require_scene_error(base_with("\"seed\": 7", "\"seed\": 1e999"), "film.seed", {"expected a finite number"});
 }
 
+TEST_CASE("A value nested 70 000 deep is an error saying where, never a stack overflow", "[scene][errors]") {
+	// The message shows short values in full; a deep one used to be written out recursively.
+	// (Not require_scene_error: its report of a failure would print the 140 000 brackets.)
+	const size_t depth = 70000;
+	const std::string deep = std::string(depth, '[') + std::string(depth, ']');
+	Temp_Dir dir;
+	for (auto [text, element] : {std::pair{deep, "top level"}, {base_with("[0, 1, 5]", deep), "camera.position"}}) {
+		std::string path = write_file(dir, "deep.json", text);
+		INFO("a scene whose " << element << " is an array nested " << depth << " deep");
+		CHECK_THROWS_WITH(load_scene(path), Catch::StartsWith(path + ": " + element + ": expected ") &&
+		                                        Catch::Contains("found an array of 1 element"));
+	}
+	require_scene_error(base_with("[0, 1, 5]", R"([[0, 1], {"a": [2]}])"), "camera.position",
+	                    {R"(found [[0,1],{"a":[2]}])"});
+}
+
 TEST_CASE("The scene file itself must exist and hold a JSON object", "[scene][errors]") {
 	Temp_Dir dir;
 	std::string missing = dir.file("missing.json");
@@ -605,7 +621,7 @@ TEST_CASE("A mesh file that is missing, has no triangles or has bad indices is a
 	write_file(dir, "empty.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
 	require_scene_error(with_file("empty.obj"), "objects[1].file", {dir.file("empty.obj") + ": no triangles"}, &dir);
 	write_file(dir, "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n");
-	require_scene_error(with_file("bad.obj"), "objects[1].file", {dir.file("bad.obj") + ": triangle 1 refers to vertex 4"}, &dir);
+	require_scene_error(with_file("bad.obj"), "objects[1].file", {dir.file("bad.obj") + ": line 4: face index 4 refers to a vertex"}, &dir);
 	require_scene_error(with_file(""), "objects[1].file", {"expected a non-empty string"}, &dir);
 }
 
