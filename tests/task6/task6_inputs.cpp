@@ -6,9 +6,9 @@
 
 namespace task6 {
 
-Vec3 direction_in_cone(RNG& rng, Vec3 axis, float cos_min) {
-	// Uniform over the cap: cos(alpha) uniform in [cos_min, 1] (Archimedes), the azimuth uniform.
-	float cos_alpha = 1.0f - rng.unit() * (1.0f - cos_min);
+Vec3 direction_in_cone(RNG& rng, Vec3 axis, float cos_min, float cos_max) {
+	// Uniform over the zone: cos(alpha) uniform in [cos_min, cos_max] (Archimedes), the azimuth uniform.
+	float cos_alpha = cos_max - rng.unit() * (cos_max - cos_min);
 	float sin_alpha = std::sqrt(std::max(0.0f, 1.0f - cos_alpha * cos_alpha));
 	float phi = 2.0f * PI_F * rng.unit();
 	Vec3 local{sin_alpha * std::cos(phi), cos_alpha, sin_alpha * std::sin(phi)};
@@ -26,7 +26,8 @@ Lit_Point lit_point(const std::string& what) {
 		p.half_side = 0.3f + 0.4f * rng.unit();
 		p.height = 0.8f + 0.6f * rng.unit();
 		p.position = Vec3{0.6f * rng.unit() - 0.3f, 0.0f, 0.6f * rng.unit() - 0.3f};
-		p.normal = direction_in_cone(rng, Vec3{0.0f, 1.0f, 0.0f}, std::cos(glm::radians(25.0f)));
+		p.normal = direction_in_cone(rng, Vec3{0.0f, 1.0f, 0.0f}, std::cos(glm::radians(25.0f)),
+		                             std::cos(glm::radians(10.0f)));
 		p.out_dir = direction_in_cone(rng, p.normal, 0.3f);
 		bool light_above_horizon = true;
 		for (glm::dvec3 corner : ceiling_square_corners(p.half_side, p.height)) {

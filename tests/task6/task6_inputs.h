@@ -13,7 +13,7 @@ namespace task6 {
 // `height`, facing down), off-centre and on a TILTED surface, so that local and world directions
 // differ in every component (handout §6.3). Public: position (0.2, 0, -0.1), normal (0.25, 1, -0.15)
 // and out_dir (-0.3, 1, 0.4) normalized, half-side 0.5 at height 1. Drawn: half-side 0.3 to 0.7,
-// height 0.8 to 1.4, the point within 0.3 of the axis, the normal within 25 degrees of +y, out_dir
+// height 0.8 to 1.4, the point within 0.3 of the axis, the normal 10 to 25 degrees from +y, out_dir
 // at most 72 degrees from the normal, and the whole light above the surface's horizon (so that
 // Lambert's formula holds).
 struct Lit_Point {
@@ -22,9 +22,9 @@ struct Lit_Point {
 };
 Lit_Point lit_point(const std::string& what);
 
-// A unit direction within the cone of directions whose cosine with `axis` is at least cos_min,
-// uniformly distributed over it.
-Vec3 direction_in_cone(RNG& rng, Vec3 axis, float cos_min);
+// A unit direction whose cosine with `axis` lies in [cos_min, cos_max], uniformly distributed over
+// that zone of the sphere.
+Vec3 direction_in_cone(RNG& rng, Vec3 axis, float cos_min, float cos_max = 1.0f);
 
 // The seed of a test case's random numbers: `public_seed`, or one drawn from the grading seed.
 uint64_t sampling_seed(const std::string& what, uint64_t public_seed);
