@@ -98,13 +98,14 @@ TEST_CASE("BSDF sampling, light sampling and the mixture all estimate the light 
 	double expected = RHO * e / M_PI;
 	Trace point = surface_point(lit.position, lit.normal);
 
-	check_estimate(estimate(pt, Strategy::bsdf, point, lit.out_dir, 100000, sampling_seed("three strategies, BSDF", 11)),
-	               expected, "BSDF sampling alone (the grader's own estimator: a failure here is a framework bug)");
-	check_estimate(
-		estimate(pt, Strategy::lights, point, lit.out_dir, 100000, sampling_seed("three strategies, lights", 12)),
-		expected, "light sampling alone (the grader's own estimator: a failure here is a framework bug)");
-	check_estimate(estimate_mixture(scene, point, lit.out_dir, 100000, sampling_seed("three strategies, mixture", 13)),
-	               expected,
+	uint64_t bsdf_seed = sampling_seed("three strategies, BSDF", 11);
+	uint64_t lights_seed = sampling_seed("three strategies, lights", 12);
+	uint64_t mixture_seed = sampling_seed("three strategies, mixture", 13);
+	check_estimate(estimate(pt, Strategy::bsdf, point, lit.out_dir, 100000, bsdf_seed), expected,
+	               "BSDF sampling alone (the grader's own estimator: a failure here is a framework bug)");
+	check_estimate(estimate(pt, Strategy::lights, point, lit.out_dir, 100000, lights_seed), expected,
+	               "light sampling alone (the grader's own estimator: a failure here is a framework bug)");
+	check_estimate(estimate_mixture(scene, point, lit.out_dir, 100000, mixture_seed), expected,
 	               "sample_incoming's mixture, weighted attenuation * |cos| / pdf: a biased mean means the pdf "
 	               "does not match how the direction was drawn (handout §6.2)");
 }

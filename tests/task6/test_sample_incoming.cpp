@@ -185,10 +185,11 @@ TEST_CASE("without lights, sample_incoming is plain BSDF sampling", "[task6]") {
 	Trace hit = surface_point(Vec3{0.0f, 1.0f, 0.0f}, lit.normal);
 	Frame frame = Frame::from_normal(lit.normal);
 	Vec3 out_local = frame.to_local(lit.out_dir);
+	uint64_t seed = sampling_seed("without lights", 5);
 	std::vector<Incoming_Sample> samples;
 	{
 		INFO("a scene without lights: check has_lights() before sampling the lights (handout §6.2)");
-		REQUIRE_NOTHROW(samples = student_samples(scene, hit, GREY, lit.out_dir, 1000, sampling_seed("without lights", 5)));
+		REQUIRE_NOTHROW(samples = student_samples(scene, hit, GREY, lit.out_dir, 1000, seed));
 	}
 	for (size_t i = 0; i < samples.size(); i++) {
 		const Incoming_Sample& s = samples[i];
@@ -218,7 +219,8 @@ TEST_CASE("a direction no strategy can produce carries zero weight, never NaN", 
 	add_object(scene, parallelogram(corner, side, depth), add_material(scene, emitter(Spectrum{1.0f}), "light"));
 	scene.commit();
 	Trace hit = surface_point(Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f});
-	std::vector<Incoming_Sample> samples = student_samples(scene, hit, GREY, out_dir, 2000, sampling_seed("zero density", 6));
+	std::vector<Incoming_Sample> samples =
+		student_samples(scene, hit, GREY, out_dir, 2000, sampling_seed("zero density", 6));
 	size_t zero_pdf = 0;
 	for (size_t i = 0; i < samples.size(); i++) {
 		const Incoming_Sample& s = samples[i];

@@ -152,7 +152,8 @@ TEST_CASE("one bright texel: the weights L / pdf average the integral of its rad
 	// of it only if the pdf covers the whole bilinear footprint (two of the grader's z-tests).
 	for (const Bright_Texel& t : cases()) {
 		const size_t N = 200000;
-		Env_Samples samples = student_env_samples(t.map(), true, unit_points(sampling_seed("bright texel weights", 80), N));
+		std::vector<Vec2> us = unit_points(sampling_seed("bright texel weights", 80), N);
+		Env_Samples samples = student_env_samples(t.map(), true, us);
 		double sum = 0.0, sum2 = 0.0;
 		size_t not_finite = 0;
 		for (size_t n = 0; n < N; n++) {

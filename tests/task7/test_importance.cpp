@@ -225,7 +225,8 @@ TEST_CASE("a constant map: the weights L / pdf average 4 pi L and stay below twi
 TEST_CASE("a black map still gives valid samples and a normalized pdf", "[task7][importance]") {
 	// Nothing to importance-sample: the table must not divide by a zero total (handout §7.4).
 	HDR_Image black(16, 8);
-	std::vector<Vec3> samples = student_image_sampler(black, unit_points(sampling_seed("black map", 77), 1000), {}).queries.samples;
+	std::vector<Vec2> us = unit_points(sampling_seed("black map", 77), 1000);
+	std::vector<Vec3> samples = student_image_sampler(black, us, {}).queries.samples;
 	std::vector<float> pdfs = student_image_sampler(black, {}, samples).queries.pdfs;
 	for (size_t n = 0; n < samples.size(); n++) {
 		Vec3 d = samples[n];
