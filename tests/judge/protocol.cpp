@@ -24,6 +24,7 @@ const char* kind_name(Kind kind) {
 	case Kind::uniform_sphere: return "uniform_sphere";
 	case Kind::image_sampler: return "image_sampler";
 	case Kind::env_map: return "env_map";
+	case Kind::env_constant: return "env_constant";
 	}
 	return "an unknown request";
 }
@@ -50,6 +51,7 @@ const char* kind_functions(Kind kind) {
 	case Kind::uniform_sphere: return "Samplers::Sphere::Uniform";
 	case Kind::image_sampler: return "Samplers::Sphere::Image";
 	case Kind::env_map: return "Env_Map";
+	case Kind::env_constant: return "Env_Constant (with your Samplers::Sphere::Uniform)";
 	}
 	return "an unknown function";
 }

@@ -58,6 +58,7 @@ enum class Kind : uint32_t {
 	uniform_sphere,
 	image_sampler,
 	env_map,
+	env_constant,
 };
 const char* kind_name(Kind kind);
 // The student functions a request runs, in the handouts' words (for messages).
@@ -358,6 +359,17 @@ struct Env_Map_Queries {
 		std::vector<Spectrum> radiance;
 		template<class A> void fields(A& a) { a(queries, radiance); }
 	};
+};
+
+// Env_Constant{radiance} (framework, sampling with Samplers::Sphere::Uniform): sample(u) for each u,
+// pdf(dir) and evaluate(dir) for each dir.
+struct Env_Constant_Queries {
+	static constexpr Kind KIND = Kind::env_constant;
+	Spectrum radiance{1.0f};
+	std::vector<Vec2> us;
+	std::vector<Vec3> dirs;
+	template<class A> void fields(A& a) { a(radiance, us, dirs); }
+	using Answer = Env_Map_Queries::Answer;
 };
 
 } // namespace protocol

@@ -181,12 +181,22 @@ Image_Sampler::Answer answer(const Image_Sampler& request) {
 	return result;
 }
 
-Env_Map_Queries::Answer answer(const Env_Map_Queries& request) {
-	Env_Map map(request.image, request.importance_sampling);
+// An environment's sample(u) for each u, pdf(dir) and evaluate(dir) for each dir.
+template<class Environment> Env_Map_Queries::Answer ask_environment(const Environment& environment,
+                                                                    const std::vector<Vec2>& us,
+                                                                    const std::vector<Vec3>& dirs) {
 	Env_Map_Queries::Answer result;
-	result.queries = ask_sampler(map, request.us, request.dirs);
-	for (Vec3 dir : request.dirs) result.radiance.push_back(map.evaluate(dir));
+	result.queries = ask_sampler(environment, us, dirs);
+	for (Vec3 dir : dirs) result.radiance.push_back(environment.evaluate(dir));
 	return result;
+}
+
+Env_Map_Queries::Answer answer(const Env_Map_Queries& request) {
+	return ask_environment(Env_Map(request.image, request.importance_sampling), request.us, request.dirs);
+}
+
+Env_Constant_Queries::Answer answer(const Env_Constant_Queries& request) {
+	return ask_environment(Env_Constant{request.radiance}, request.us, request.dirs);
 }
 
 template<class Request> std::string serve(const std::string& payload) {
@@ -215,6 +225,7 @@ std::string serve(Kind kind, const std::string& payload) {
 	case Kind::uniform_sphere: return serve<Uniform_Sphere>(payload);
 	case Kind::image_sampler: return serve<Image_Sampler>(payload);
 	case Kind::env_map: return serve<Env_Map_Queries>(payload);
+	case Kind::env_constant: return serve<Env_Constant_Queries>(payload);
 	}
 	throw wire::Malformed("unknown request kind " + std::to_string(uint32_t(kind)));
 }

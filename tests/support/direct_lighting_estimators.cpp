@@ -20,47 +20,32 @@ Spectrum arriving_radiance(const Scene& scene, Vec3 from, Vec3 dir) {
 	return scene.materials[hit.material].emitted(Vec3{0.0f, glm::dot(-dir, hit.normal), 0.0f});
 }
 
-const char* to_string(Strategy strategy) {
-	switch (strategy) {
-	case Strategy::bsdf: return "BSDF sampling only";
-	case Strategy::lights: return "light sampling only";
-	default: return "the mixture (sample_incoming)";
-	}
-}
-
 namespace {
 double channel_average(Spectrum s) {
 	return (double(s.r) + double(s.g) + double(s.b)) / 3.0;
 }
+} // namespace
 
 Incoming_Sample draw(const Pathtracer& pt, Strategy strategy, RNG& rng, const Trace& point, const BSDF& bsdf,
                      Vec3 out_dir) {
 	Frame frame = Frame::from_normal(point.normal);
 	Vec3 out_local = frame.to_local(out_dir);
-	switch (strategy) {
-	case Strategy::bsdf: {
+	if (strategy == Strategy::bsdf) {
 		Scatter s = bsdf.scatter(rng, out_local);
 		return Incoming_Sample{frame.to_world(s.direction), s.attenuation, bsdf.pdf(out_local, s.direction),
 		                       bsdf.is_discrete()};
 	}
-	case Strategy::lights: {
-		Vec3 dir = pt.sample_area_lights(rng, point.position);
-		return Incoming_Sample{dir, bsdf.evaluate(out_local, frame.to_local(dir)),
-		                       pt.area_lights_pdf(point.position, dir), false};
-	}
-	default: return pt.sample_incoming(rng, point, bsdf, out_dir);
-	}
+	Vec3 dir = pt.sample_area_lights(rng, point.position);
+	return Incoming_Sample{dir, bsdf.evaluate(out_local, frame.to_local(dir)), pt.area_lights_pdf(point.position, dir),
+	                       false};
 }
-} // namespace
 
-double reflected_radiance_sample(const Pathtracer& pt, Strategy strategy, RNG& rng, const Trace& point,
-                                 const BSDF& bsdf, Vec3 out_dir) {
-	Incoming_Sample s = draw(pt, strategy, rng, point, bsdf, out_dir);
+double reflected_radiance_sample(const Scene& scene, const Trace& point, const Incoming_Sample& s) {
 	Spectrum weight = s.discrete ? s.attenuation
 	                  : s.pdf > 0.0f ? s.attenuation * std::abs(glm::dot(s.direction, point.normal)) / s.pdf
 	                                 : Spectrum{0.0f};
 	if (weight == Spectrum{0.0f}) return 0.0;
-	return channel_average(weight * arriving_radiance(pt.scene, point.position, s.direction));
+	return channel_average(weight * arriving_radiance(scene, point.position, s.direction));
 }
 
 double Sample_Moments::standard_error() const {

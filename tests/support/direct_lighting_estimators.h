@@ -14,17 +14,19 @@ Trace surface_point(Vec3 position, Vec3 normal);
 // the emission of the closest surface along the ray towards its origin, else the environment.
 Spectrum arriving_radiance(const Scene& scene, Vec3 from, Vec3 dir);
 
+// The grader's own strategies, for comparison with the student's mixture (sample_incoming).
 enum class Strategy {
-	bsdf,    // BSDF::scatter in the local frame, with density BSDF::pdf
-	lights,  // Pathtracer::sample_area_lights, with density area_lights_pdf
-	mixture, // Pathtracer::sample_incoming (task 6), with the density it returns
+	bsdf,   // BSDF::scatter in the local frame, with density BSDF::pdf
+	lights, // Pathtracer::sample_area_lights, with density area_lights_pdf
 };
-const char* to_string(Strategy strategy);
 
-// One sample of L_o = f * L_in * |cos theta| / pdf (the attenuation alone for a discrete sample; 0
-// when pdf = 0), averaged over the RGB channels.
-double reflected_radiance_sample(const Pathtracer& pt, Strategy strategy, RNG& rng, const Trace& point,
-                                 const BSDF& bsdf, Vec3 out_dir);
+// One direction drawn with `strategy`, as sample_incoming would return it.
+Incoming_Sample draw(const Pathtracer& pt, Strategy strategy, RNG& rng, const Trace& point, const BSDF& bsdf,
+                     Vec3 out_dir);
+
+// The sample of L_o = f * L_in * |cos theta| / pdf that a direction gives (the attenuation alone
+// for a discrete sample; 0 when pdf = 0), averaged over the RGB channels.
+double reflected_radiance_sample(const Scene& scene, const Trace& point, const Incoming_Sample& s);
 
 // Mean, unbiased variance and fourth central moment of a set of samples.
 struct Sample_Moments {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 namespace stats {
 
@@ -45,16 +46,27 @@ std::string Sphere_Chi2_Result::summary() const {
 	return s.str();
 }
 
-Sphere_Chi2_Result sphere_chi2(const Direction_Sampler& sample, const Direction_Pdf& pdf,
+std::vector<Vec3> sphere_chi2_pdf_directions(const Sphere_Chi2_Settings& settings) {
+	const uint32_t r = settings.integration_resolution;
+	const double d_theta = M_PI / (double(settings.theta_cells) * r);
+	const double d_phi = 2.0 * M_PI / (double(settings.phi_cells) * r);
+	std::vector<Vec3> directions;
+	for (uint32_t a = 0; a < settings.theta_cells * r; a++) {
+		for (uint32_t b = 0; b < settings.phi_cells * r; b++) {
+			directions.push_back(direction((a + 0.5) * d_theta, (b + 0.5) * d_phi));
+		}
+	}
+	return directions;
+}
+
+Sphere_Chi2_Result sphere_chi2(const std::vector<Vec3>& samples, const std::vector<float>& pdf_values,
                                const Sphere_Chi2_Settings& settings) {
 	Grid grid{settings.theta_cells, settings.phi_cells};
 	Sphere_Chi2_Result result;
-	result.samples = settings.samples;
+	result.samples = samples.size();
 
 	std::vector<double> observed(grid.cells(), 0.0);
-	RNG rng(settings.seed);
-	for (size_t n = 0; n < settings.samples; n++) {
-		Vec3 d = sample(rng);
+	for (Vec3 d : samples) {
 		if (!is_finite(d) || std::abs(glm::length(d) - 1.0f) > 1e-3f) {
 			result.invalid_samples++;
 			continue;
@@ -62,16 +74,21 @@ Sphere_Chi2_Result sphere_chi2(const Direction_Sampler& sample, const Direction_
 		observed[grid.cell_of(d)] += 1.0;
 	}
 
-	// Expected counts: N * integral over the cell of pdf * sin(theta) d theta d phi (midpoint rule).
+	// Expected counts: N * integral over the cell of pdf * sin(theta) d theta d phi (midpoint rule
+	// at the points of sphere_chi2_pdf_directions, in its order).
 	std::vector<double> expected(grid.cells(), 0.0);
 	const uint32_t r = settings.integration_resolution;
+	if (pdf_values.size() != sphere_chi2_pdf_directions(settings).size()) {
+		throw std::invalid_argument("sphere_chi2: " + std::to_string(pdf_values.size()) +
+		                            " pdf values, not one per point of sphere_chi2_pdf_directions");
+	}
 	const double d_theta = M_PI / (double(grid.theta_cells) * r);
 	const double d_phi = 2.0 * M_PI / (double(grid.phi_cells) * r);
+	size_t k = 0;
 	for (uint32_t a = 0; a < grid.theta_cells * r; a++) {
 		double theta = (a + 0.5) * d_theta;
 		for (uint32_t b = 0; b < grid.phi_cells * r; b++) {
-			double phi = (b + 0.5) * d_phi;
-			double p = pdf(direction(theta, phi));
+			double p = pdf_values[k++];
 			if (!std::isfinite(p) || p < 0.0) {
 				result.invalid_pdf_values++;
 				continue;
@@ -81,10 +98,20 @@ Sphere_Chi2_Result sphere_chi2(const Direction_Sampler& sample, const Direction_
 			result.pdf_integral += mass;
 		}
 	}
-	for (double& e : expected) e *= double(settings.samples);
+	for (double& e : expected) e *= double(samples.size());
 
 	result.chi2 = chi2_test(observed, expected, settings.min_expected);
 	return result;
+}
+
+Sphere_Chi2_Result sphere_chi2(const Direction_Sampler& sample, const Direction_Pdf& pdf,
+                               const Sphere_Chi2_Settings& settings) {
+	std::vector<Vec3> samples(settings.samples);
+	RNG rng(settings.seed);
+	for (Vec3& d : samples) d = sample(rng);
+	std::vector<float> pdf_values;
+	for (Vec3 d : sphere_chi2_pdf_directions(settings)) pdf_values.push_back(pdf(d));
+	return sphere_chi2(samples, pdf_values, settings);
 }
 
 } // namespace stats

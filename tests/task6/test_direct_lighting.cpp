@@ -1,29 +1,45 @@
 // Task 6 grader, part 2: what the mixture estimates (handout §6.1, §6.2, §6.4). Closed forms for the
 // light a diffuse surface reflects (Lambert's formula for a square light, pi L (r/d)^2 cos(beta) for a
 // sphere), the three strategies agreeing on them, the variance the mixture saves under a small
-// light, and full renders with max_depth 1.
+// light, and full renders with max_depth 1. The student's sample_incoming and trace_pixel answer
+// in one request per estimate; the other strategies are the grader's own.
 #include "direct_lighting_estimators.h"
 #include "grader_significance.h"
+#include "judge.h"
 #include "light_closed_forms.h"
 #include "light_scenes.h"
+#include "task6_inputs.h"
 
 #include <catch2/catch.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
 
+using namespace task6;
+
 namespace {
 
 const float RHO = 0.5f; // albedo of every receiver
 const BSDF GREY{BSDF_Lambertian{Spectrum{RHO}}};
 
-// n samples of the light reflected at `point` towards out_dir with one strategy.
+Sample_Moments estimate_from(const Scene& scene, const Trace& point, const std::vector<Incoming_Sample>& drawn) {
+	std::vector<double> samples;
+	for (const Incoming_Sample& s : drawn) samples.push_back(reflected_radiance_sample(scene, point, s));
+	return moments(samples);
+}
+
+// n samples of the light reflected at `point` towards out_dir with one of the grader's strategies.
 Sample_Moments estimate(const Pathtracer& pt, Strategy strategy, const Trace& point, Vec3 out_dir, size_t n,
                         uint64_t seed) {
-	std::vector<double> samples(n);
+	std::vector<Incoming_Sample> drawn(n);
 	RNG rng(seed);
-	for (double& x : samples) x = reflected_radiance_sample(pt, strategy, rng, point, GREY, out_dir);
-	return moments(samples);
+	for (Incoming_Sample& s : drawn) s = draw(pt, strategy, rng, point, GREY, out_dir);
+	return estimate_from(pt.scene, point, drawn);
+}
+
+// The same with the student's sample_incoming (the mixture), in one request.
+Sample_Moments estimate_mixture(const Scene& scene, const Trace& point, Vec3 out_dir, size_t n, uint64_t seed) {
+	return estimate_from(scene, point, student_samples(scene, point, GREY, out_dir, n, seed));
 }
 
 // z-test of an estimate against the closed form.
@@ -34,14 +50,17 @@ void check_estimate(const Sample_Moments& m, double expected, const std::string&
 	CHECK(std::abs(z) <= task6::z_critical());
 }
 
-// n camera samples of pixel (0, 0), with the film's per-sample RNG.
-Sample_Moments render_samples(const Pathtracer& pt, size_t n) {
-	std::vector<double> samples(n);
-	for (size_t i = 0; i < n; i++) {
-		RNG rng = RNG::for_sample(pt.settings.seed, 0, i);
-		Spectrum v = pt.trace_pixel(0, 0, rng);
-		samples[i] = (double(v.r) + double(v.g) + double(v.b)) / 3.0;
-	}
+// n camera samples of pixel (0, 0), with the film's per-sample RNG, from the student's renderer
+// (trace_pixel with the student's sample_incoming) in one request.
+std::vector<Spectrum> render_samples(const Scene& scene, const Render_Settings& settings, size_t n) {
+	protocol::Trace_Pixels request{scene, settings, View::path, {}};
+	for (size_t i = 0; i < n; i++) request.samples.push_back({0, 0, RNG::for_sample(settings.seed, 0, i).save()});
+	return judge::ask(request);
+}
+
+Sample_Moments pixel_moments(const std::vector<Spectrum>& values) {
+	std::vector<double> samples;
+	for (Spectrum v : values) samples.push_back((double(v.r) + double(v.g) + double(v.b)) / 3.0);
 	return moments(samples);
 }
 
@@ -69,37 +88,46 @@ Render_Settings one_pixel(uint64_t seed) {
 
 TEST_CASE("BSDF sampling, light sampling and the mixture all estimate the light Lambert's formula gives",
           "[task6]") {
-	// A tilted, off-centre receiver under a square light (half-side 0.5, height 1, radiance 1):
-	// L_o = rho E / pi, E from Lambert's formula for polygons.
-	Scene scene = ceiling_light_scene(0.5f, 1.0f);
+	// A tilted, off-centre receiver under a square light (public: half-side 0.5, height 1, radiance
+	// 1): L_o = rho E / pi, E from Lambert's formula for polygons.
+	Lit_Point lit = lit_point("three strategies");
+	Scene scene = ceiling_light_scene(lit.half_side, lit.height);
 	Pathtracer pt(scene, Render_Settings{});
-	Vec3 position{0.2f, 0.0f, -0.1f}, normal = glm::normalize(Vec3{0.25f, 1.0f, -0.15f});
-	Vec3 out_dir = glm::normalize(Vec3{-0.3f, 1.0f, 0.4f});
-	double e = closed_form::polygon_irradiance(ceiling_square_corners(0.5f, 1.0f), glm::dvec3(position),
-	                                           glm::dvec3(normal), 1.0);
+	double e = closed_form::polygon_irradiance(ceiling_square_corners(lit.half_side, lit.height),
+	                                           glm::dvec3(lit.position), glm::dvec3(lit.normal), 1.0);
 	double expected = RHO * e / M_PI;
-	Trace point = surface_point(position, normal);
+	Trace point = surface_point(lit.position, lit.normal);
 
-	check_estimate(estimate(pt, Strategy::bsdf, point, out_dir, 100000, 11), expected,
+	uint64_t bsdf_seed = sampling_seed("three strategies, BSDF", 11);
+	uint64_t lights_seed = sampling_seed("three strategies, lights", 12);
+	uint64_t mixture_seed = sampling_seed("three strategies, mixture", 13);
+	check_estimate(estimate(pt, Strategy::bsdf, point, lit.out_dir, 100000, bsdf_seed), expected,
 	               "BSDF sampling alone (the grader's own estimator: a failure here is a framework bug)");
-	check_estimate(estimate(pt, Strategy::lights, point, out_dir, 100000, 12), expected,
+	check_estimate(estimate(pt, Strategy::lights, point, lit.out_dir, 100000, lights_seed), expected,
 	               "light sampling alone (the grader's own estimator: a failure here is a framework bug)");
-	check_estimate(estimate(pt, Strategy::mixture, point, out_dir, 100000, 13), expected,
+	check_estimate(estimate_mixture(scene, point, lit.out_dir, 100000, mixture_seed), expected,
 	               "sample_incoming's mixture, weighted attenuation * |cos| / pdf: a biased mean means the pdf "
 	               "does not match how the direction was drawn (handout §6.2)");
 }
 
 TEST_CASE("the mixture estimates the light from a sphere: E = pi L (r/d)^2 cos(beta)", "[task6]") {
-	// A sphere light of radius 0.5 at distance 2 along a direction 30 degrees from the normal.
+	// A sphere light of radius 0.5 at distance 2 along a direction 30 degrees from the normal. With a
+	// grading seed: radius 0.3 to 0.6, distance 1.5 to 3, 0 to 55 degrees from the normal, so that
+	// the whole sphere stays above the horizon (beta + asin(r / d) < 79 degrees).
+	double radius = 0.5, distance = 2.0, beta = M_PI / 6.0;
+	if (judge::secret_seed()) {
+		RNG rng = judge::case_generator("sphere light");
+		radius = 0.3 + 0.3 * rng.unit(), distance = 1.5 + 1.5 * rng.unit(), beta = glm::radians(55.0 * rng.unit());
+	}
 	Scene scene;
-	add_object(scene, Sphere{0.5f}, add_material(scene, emitter(Spectrum{1.0f}), "light"),
-	           glm::translate(Mat4{1.0f}, Vec3{0.0f, 2.0f, 0.0f}));
+	add_object(scene, Sphere{float(radius)}, add_material(scene, emitter(Spectrum{1.0f}), "light"),
+	           glm::translate(Mat4{1.0f}, Vec3{0.0f, float(distance), 0.0f}));
 	scene.commit();
-	Pathtracer pt(scene, Render_Settings{});
-	Vec3 normal{std::sin(PI_F / 6.0f), std::cos(PI_F / 6.0f), 0.0f};
-	double expected = RHO * closed_form::sphere_irradiance(0.5, 2.0, std::cos(M_PI / 6.0), 1.0) / M_PI;
-	check_estimate(estimate(pt, Strategy::mixture, surface_point(Vec3{0.0f}, normal), normal, 100000, 21), expected,
-	               "sample_incoming's mixture under a sphere light (handout §6.2)");
+	Vec3 normal{float(std::sin(beta)), float(std::cos(beta)), 0.0f};
+	double expected = RHO * closed_form::sphere_irradiance(radius, distance, std::cos(beta), 1.0) / M_PI;
+	check_estimate(estimate_mixture(scene, surface_point(Vec3{0.0f}, normal), normal, 100000,
+	                                sampling_seed("sphere light", 21)),
+	               expected, "sample_incoming's mixture under a sphere light (handout §6.2)");
 }
 
 TEST_CASE("under a small light, the mixture has a lower variance than BSDF sampling alone", "[task6]") {
@@ -110,8 +138,8 @@ TEST_CASE("under a small light, the mixture has a lower variance than BSDF sampl
 	Pathtracer pt(scene, Render_Settings{});
 	Trace point = surface_point(Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f});
 	Vec3 out_dir{0.0f, 1.0f, 0.0f};
-	Sample_Moments bsdf = estimate(pt, Strategy::bsdf, point, out_dir, 100000, 31);
-	Sample_Moments mixture = estimate(pt, Strategy::mixture, point, out_dir, 100000, 32);
+	Sample_Moments bsdf = estimate(pt, Strategy::bsdf, point, out_dir, 100000, sampling_seed("variance, BSDF", 31));
+	Sample_Moments mixture = estimate_mixture(scene, point, out_dir, 100000, sampling_seed("variance, mixture", 32));
 	double z = (bsdf.variance - mixture.variance) /
 	           std::sqrt(bsdf.variance_of_variance() + mixture.variance_of_variance());
 	double critical = stats::normal_quantile(1.0 - task6::check_alpha());
@@ -124,19 +152,27 @@ TEST_CASE("under a small light, the mixture has a lower variance than BSDF sampl
 
 TEST_CASE("a diffuse floor under a square light renders as rho E / pi (max_depth 1)", "[task6]") {
 	// Lambert's formula for a parallel square of half-side a at height h, under its centre:
-	// a/h = 0.5 -> E = 0.752275 L, a/h = 1 -> E = 1.740840 L (testing-anchors §4).
+	// a/h = 0.5 -> E = 0.752275 L, a/h = 1 -> E = 1.740840 L (testing-anchors §4). With a grading
+	// seed, two squares of half-side 0.3 to 1.2 at height 0.7 to 1.5, of radiance 0.5 to 3.
 	REQUIRE(closed_form::centred_square_irradiance(0.5, 1.0, 1.0) == Approx(0.752275).epsilon(1e-6));
 	REQUIRE(closed_form::centred_square_irradiance(1.0, 1.0, 1.0) == Approx(1.740840).epsilon(1e-6));
 	struct Case {
 		float half_side, height, radiance;
 		uint64_t seed;
 	};
-	for (Case c : {Case{0.5f, 1.0f, 2.0f, 41}, Case{1.0f, 1.0f, 1.0f, 42}}) {
+	std::vector<Case> cases{Case{0.5f, 1.0f, 2.0f, 41}, Case{1.0f, 1.0f, 1.0f, 42}};
+	if (judge::secret_seed()) {
+		RNG rng = judge::case_generator("lit floor");
+		for (Case& c : cases) {
+			c = Case{0.3f + 0.9f * rng.unit(), 0.7f + 0.8f * rng.unit(), 0.5f + 2.5f * rng.unit(),
+			         uint64_t(rng.integer()) << 32 | rng.integer()};
+		}
+	}
+	for (Case c : cases) {
 		Scene scene = lit_floor(c.half_side, c.height, Spectrum{c.radiance}, Vec3{0.6f, 0.4f, 0.5f});
 		scene.commit();
-		Pathtracer pt(scene, one_pixel(c.seed));
 		double e = closed_form::centred_square_irradiance(c.half_side, c.height, c.radiance);
-		check_estimate(render_samples(pt, 50000), RHO * e / M_PI,
+		check_estimate(pixel_moments(render_samples(scene, one_pixel(c.seed), 50000)), RHO * e / M_PI,
 		               "pixel under a square light with a/h = " + std::to_string(c.half_side / c.height) +
 		                   ", L = " + std::to_string(c.radiance) + " (the renderer with your sample_incoming, "
 		                   "handout §6.2)");
@@ -150,10 +186,9 @@ TEST_CASE("a light hidden behind a blocker gives exactly 0", "[task6]") {
 	Scene scene = lit_floor(0.5f, 1.0f, Spectrum{1.0f}, Vec3{2.0f, 0.1f, 0.0f});
 	add_object(scene, ceiling_square(0.6f, 0.5f), add_material(scene, diffuse_material(Spectrum{0.0f}), "blocker"));
 	scene.commit();
-	Pathtracer pt(scene, one_pixel(51));
-	for (size_t i = 0; i < 20000; i++) {
-		RNG rng = RNG::for_sample(pt.settings.seed, 0, i);
-		Spectrum v = pt.trace_pixel(0, 0, rng);
+	std::vector<Spectrum> values = render_samples(scene, one_pixel(sampling_seed("occlusion", 51)), 20000);
+	for (size_t i = 0; i < values.size(); i++) {
+		Spectrum v = values[i];
 		INFO("sample " << i << " of an occluded light: (" << v.r << ", " << v.g << ", " << v.b
 		               << "); light must arrive only along rays that reach it (handout §6.2)");
 		REQUIRE(v == Spectrum{0.0f});

@@ -1,25 +1,25 @@
 // Task 6 grader, part 1: what Pathtracer::sample_incoming returns, sample by sample (handout §6.2,
 // §6.3): the mixture's density for the direction it returns, a fair coin between the strategies,
 // discrete BSDFs and light-less scenes left to BSDF sampling, and no NaN where no strategy can
-// produce a direction.
+// produce a direction. The student's samples come in one request per test case; the expected
+// densities are the reference BSDF's and the framework's light sampler's.
 #include "direct_lighting_estimators.h"
 #include "frame.h"
 #include "grader_significance.h"
+#include "judge.h"
 #include "light_closed_forms.h"
 #include "light_scenes.h"
+#include "task6_inputs.h"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <sstream>
 
+using namespace task6;
+
 namespace {
 
-// The lit point of these tests: off-centre under a square light of half-side 0.5 at height 1, on a
-// TILTED surface, so that local and world directions differ in every component (handout §6.3).
-const Vec3 POINT{0.2f, 0.0f, -0.1f};
-const Vec3 NORMAL = glm::normalize(Vec3{0.25f, 1.0f, -0.15f});
-const Vec3 OUT_DIR = glm::normalize(Vec3{-0.3f, 1.0f, 0.4f}); // towards the viewer
 const BSDF GREY{BSDF_Lambertian{Spectrum{0.5f}}};
 
 std::string describe(Vec3 v) {
@@ -37,15 +37,19 @@ struct First_Problem {
 	}
 };
 
-// Checks every one of `n` samples of sample_incoming against the mixture's definition.
-First_Problem check_mixture_samples(const Pathtracer& pt, uint64_t seed, size_t n) {
+// The student's samples at the lit point under the ceiling light of `scene`.
+std::vector<Incoming_Sample> samples_at(const Scene& scene, const Lit_Point& lit, size_t n, uint64_t seed) {
+	return student_samples(scene, surface_point(lit.position, lit.normal), GREY, lit.out_dir, n, seed);
+}
+
+// Checks every sample of sample_incoming against the mixture's definition.
+First_Problem check_mixture_samples(const Pathtracer& pt, const Lit_Point& lit,
+                                    const std::vector<Incoming_Sample>& samples) {
 	First_Problem problem;
-	Trace hit = surface_point(POINT, NORMAL);
-	Frame frame = Frame::from_normal(NORMAL);
-	Vec3 out_local = frame.to_local(OUT_DIR);
-	RNG rng(seed);
-	for (size_t i = 0; i < n; i++) {
-		Incoming_Sample s = pt.sample_incoming(rng, hit, GREY, OUT_DIR);
+	Frame frame = Frame::from_normal(lit.normal);
+	Vec3 out_local = frame.to_local(lit.out_dir);
+	for (size_t i = 0; i < samples.size(); i++) {
+		const Incoming_Sample& s = samples[i];
 		std::string where = "sample " + std::to_string(i) + ", direction " + describe(s.direction) + ": ";
 		if (!is_finite(s.direction) || std::abs(glm::length(s.direction) - 1.0f) > 1e-4f) {
 			problem.note(where + "the direction must be a unit vector (handout §6.3)");
@@ -56,7 +60,7 @@ First_Problem check_mixture_samples(const Pathtracer& pt, uint64_t seed, size_t 
 			continue;
 		}
 		Vec3 in_local = frame.to_local(s.direction);
-		float expected = 0.5f * GREY.pdf(out_local, in_local) + 0.5f * pt.area_lights_pdf(POINT, s.direction);
+		float expected = 0.5f * GREY.pdf(out_local, in_local) + 0.5f * pt.area_lights_pdf(lit.position, s.direction);
 		if (!(std::abs(s.pdf - expected) <= 1e-4f * expected + 1e-6f)) {
 			problem.note(where + "pdf " + std::to_string(s.pdf) + ", but 0.5 * bsdf.pdf + 0.5 * area_lights_pdf = " +
 			             std::to_string(expected) +
@@ -79,19 +83,22 @@ First_Problem check_mixture_samples(const Pathtracer& pt, uint64_t seed, size_t 
 
 TEST_CASE("sample_incoming returns the mixture's density 0.5 bsdf.pdf + 0.5 area_lights_pdf of its direction",
           "[task6]") {
+	Lit_Point lit = lit_point("mixture density");
 	SECTION("a square light") {
-		Scene scene = ceiling_light_scene(0.5f, 1.0f);
+		Scene scene = ceiling_light_scene(lit.half_side, lit.height);
 		Pathtracer pt(scene, Render_Settings{});
-		First_Problem problem = check_mixture_samples(pt, 1, 20000);
+		First_Problem problem =
+			check_mixture_samples(pt, lit, samples_at(scene, lit, 20000, sampling_seed("mixture density, square", 1)));
 		INFO("sample_incoming at a lit point under a square light: " << problem.count << " of 20000 samples wrong. "
 		                                                             << problem.text);
 		CHECK(problem.count == 0);
 	}
 	SECTION("a square light and a constant environment") {
-		Scene scene = ceiling_light_scene(0.5f, 1.0f);
+		Scene scene = ceiling_light_scene(lit.half_side, lit.height);
 		scene.environment = Env_Constant{Spectrum{0.2f}};
 		Pathtracer pt(scene, Render_Settings{});
-		First_Problem problem = check_mixture_samples(pt, 2, 20000);
+		First_Problem problem = check_mixture_samples(
+			pt, lit, samples_at(scene, lit, 20000, sampling_seed("mixture density, environment", 2)));
 		INFO("sample_incoming under a square light and an environment: " << problem.count << " of 20000 samples "
 		                                                                 << "wrong. " << problem.text);
 		CHECK(problem.count == 0);
@@ -102,19 +109,17 @@ TEST_CASE("sample_incoming chooses BSDF or light sampling with a fair coin", "[t
 	// Light sampling always aims at the light; cosine-weighted BSDF sampling hits it with
 	// probability E / (pi L) (the irradiance of a light of radiance 1, over pi). So a fair coin sends
 	// a fraction 1/2 + 1/2 * E / pi of the directions towards the light.
-	Scene scene = ceiling_light_scene(0.5f, 1.0f);
+	Lit_Point lit = lit_point("fair coin");
+	Scene scene = ceiling_light_scene(lit.half_side, lit.height);
 	Pathtracer pt(scene, Render_Settings{});
-	double e = closed_form::polygon_irradiance(ceiling_square_corners(0.5f, 1.0f), glm::dvec3(POINT),
-	                                           glm::dvec3(NORMAL), 1.0);
+	double e = closed_form::polygon_irradiance(ceiling_square_corners(lit.half_side, lit.height),
+	                                           glm::dvec3(lit.position), glm::dvec3(lit.normal), 1.0);
 	double expected = 0.5 + 0.5 * e / M_PI;
 
-	Trace hit = surface_point(POINT, NORMAL);
-	RNG rng(3);
 	const size_t n = 100000;
 	size_t towards_light = 0;
-	for (size_t i = 0; i < n; i++) {
-		Vec3 dir = pt.sample_incoming(rng, hit, GREY, OUT_DIR).direction;
-		if (pt.area_lights_pdf(POINT, dir) > 0.0f) towards_light++;
+	for (const Incoming_Sample& s : samples_at(scene, lit, n, sampling_seed("fair coin", 3))) {
+		if (pt.area_lights_pdf(lit.position, s.direction) > 0.0f) towards_light++;
 	}
 	double z = stats::binomial_z(towards_light, n, expected);
 	INFO("sample_incoming sent " << towards_light << " of " << n << " directions towards the light; a fair coin "
@@ -125,20 +130,21 @@ TEST_CASE("sample_incoming chooses BSDF or light sampling with a fair coin", "[t
 }
 
 TEST_CASE("discrete BSDFs are sampled as they are, without light sampling", "[task6]") {
-	Scene scene = ceiling_light_scene(0.5f, 1.0f);
-	Pathtracer pt(scene, Render_Settings{});
-	Trace hit = surface_point(POINT, NORMAL);
-	Frame frame = Frame::from_normal(NORMAL);
-	Vec3 out_local = frame.to_local(OUT_DIR);
-	RNG rng(4);
+	Lit_Point lit = lit_point("discrete BSDFs");
+	Scene scene = ceiling_light_scene(lit.half_side, lit.height);
+	Trace hit = surface_point(lit.position, lit.normal);
+	Frame frame = Frame::from_normal(lit.normal);
+	Vec3 out_local = frame.to_local(lit.out_dir);
+	uint64_t seed = sampling_seed("discrete BSDFs", 4);
 
 	SECTION("a mirror reflects, always") {
 		BSDF mirror_bsdf{BSDF_Mirror{Spectrum{0.9f, 0.8f, 0.7f}}};
 		RNG any(0);
 		Scatter expected = mirror_bsdf.scatter(any, out_local);
 		Vec3 reflection = frame.to_world(expected.direction);
-		for (int i = 0; i < 1000; i++) {
-			Incoming_Sample s = pt.sample_incoming(rng, hit, mirror_bsdf, OUT_DIR);
+		std::vector<Incoming_Sample> samples = student_samples(scene, hit, mirror_bsdf, lit.out_dir, 1000, seed);
+		for (size_t i = 0; i < samples.size(); i++) {
+			const Incoming_Sample& s = samples[i];
 			INFO("sample " << i << ": a mirror's sample must be its BSDF sample, marked discrete: direction "
 			               << describe(s.direction) << " (expected " << describe(reflection) << "), attenuation "
 			               << describe(s.attenuation) << " (expected " << describe(expected.attenuation)
@@ -153,8 +159,9 @@ TEST_CASE("discrete BSDFs are sampled as they are, without light sampling", "[ta
 		bool internal = false;
 		Vec3 reflection = frame.to_world(reflect(out_local));
 		Vec3 refraction = frame.to_world(refract(out_local, 1.5f, internal));
-		for (int i = 0; i < 1000; i++) {
-			Incoming_Sample s = pt.sample_incoming(rng, hit, glass_bsdf, OUT_DIR);
+		std::vector<Incoming_Sample> samples = student_samples(scene, hit, glass_bsdf, lit.out_dir, 1000, seed);
+		for (size_t i = 0; i < samples.size(); i++) {
+			const Incoming_Sample& s = samples[i];
 			bool reflected = glm::length(s.direction - reflection) <= 1e-5f;
 			bool refracted = glm::length(s.direction - refraction) <= 1e-5f;
 			INFO("sample " << i << ": glass must give its own BSDF sample (the reflection " << describe(reflection)
@@ -174,14 +181,18 @@ TEST_CASE("without lights, sample_incoming is plain BSDF sampling", "[task6]") {
 	Pathtracer pt(scene, Render_Settings{});
 	REQUIRE_FALSE(pt.has_lights());
 
-	Trace hit = surface_point(Vec3{0.0f, 1.0f, 0.0f}, NORMAL);
-	Frame frame = Frame::from_normal(NORMAL);
-	Vec3 out_local = frame.to_local(OUT_DIR);
-	RNG rng(5);
-	for (int i = 0; i < 1000; i++) {
-		Incoming_Sample s;
+	Lit_Point lit = lit_point("without lights");
+	Trace hit = surface_point(Vec3{0.0f, 1.0f, 0.0f}, lit.normal);
+	Frame frame = Frame::from_normal(lit.normal);
+	Vec3 out_local = frame.to_local(lit.out_dir);
+	uint64_t seed = sampling_seed("without lights", 5);
+	std::vector<Incoming_Sample> samples;
+	{
 		INFO("a scene without lights: check has_lights() before sampling the lights (handout §6.2)");
-		REQUIRE_NOTHROW(s = pt.sample_incoming(rng, hit, GREY, OUT_DIR));
+		REQUIRE_NOTHROW(samples = student_samples(scene, hit, GREY, lit.out_dir, 1000, seed));
+	}
+	for (size_t i = 0; i < samples.size(); i++) {
+		const Incoming_Sample& s = samples[i];
 		float bsdf_pdf = GREY.pdf(out_local, frame.to_local(s.direction));
 		INFO("sample " << i << ": pdf " << s.pdf << ", but without lights the density is the BSDF's alone, "
 		               << bsdf_pdf << " (no mixture: nothing to mix with)");
@@ -192,17 +203,27 @@ TEST_CASE("without lights, sample_incoming is plain BSDF sampling", "[task6]") {
 TEST_CASE("a direction no strategy can produce carries zero weight, never NaN", "[task6]") {
 	// A light lying in the receiver's own plane, seen exactly edge-on: its directions are on the
 	// horizon (BSDF density 0) and graze the light (light density 0), so the mixture density is 0.
-	Scene scene;
-	add_object(scene, parallelogram(Vec3{1.0f, 0.0f, -0.5f}, Vec3{0.0f, 0.0f, 1.0f}, Vec3{1.0f, 0.0f, 0.0f}),
-	           add_material(scene, emitter(Spectrum{1.0f}), "light"));
-	scene.commit();
-	Pathtracer pt(scene, Render_Settings{});
-	Trace hit = surface_point(Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f});
+	// With a grading seed the light's place in the plane and out_dir are drawn.
+	Vec3 corner{1.0f, 0.0f, -0.5f}, side{0.0f, 0.0f, 1.0f}, depth{1.0f, 0.0f, 0.0f};
 	Vec3 out_dir = glm::normalize(Vec3{0.3f, 1.0f, 0.2f});
-	RNG rng(6);
+	if (judge::secret_seed()) {
+		RNG rng = judge::case_generator("zero density");
+		float angle = 2.0f * PI_F * rng.unit(), distance = 0.5f + rng.unit(), width = 0.5f + rng.unit();
+		Vec3 away{std::cos(angle), 0.0f, std::sin(angle)}, across{-away.z, 0.0f, away.x};
+		corner = distance * away - 0.5f * width * across;
+		side = width * across;
+		depth = (0.5f + rng.unit()) * away;
+		out_dir = direction_in_cone(rng, Vec3{0.0f, 1.0f, 0.0f}, 0.3f);
+	}
+	Scene scene;
+	add_object(scene, parallelogram(corner, side, depth), add_material(scene, emitter(Spectrum{1.0f}), "light"));
+	scene.commit();
+	Trace hit = surface_point(Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f});
+	std::vector<Incoming_Sample> samples =
+		student_samples(scene, hit, GREY, out_dir, 2000, sampling_seed("zero density", 6));
 	size_t zero_pdf = 0;
-	for (int i = 0; i < 2000; i++) {
-		Incoming_Sample s = pt.sample_incoming(rng, hit, GREY, out_dir);
+	for (size_t i = 0; i < samples.size(); i++) {
+		const Incoming_Sample& s = samples[i];
 		if (s.pdf == 0.0f) zero_pdf++;
 		INFO("sample " << i << ": pdf " << s.pdf << ", attenuation " << describe(s.attenuation)
 		               << ". A direction of density 0 must come with zero attenuation, and nothing may be NaN "

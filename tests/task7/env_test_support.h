@@ -1,14 +1,18 @@
 #pragma once
-// Shared pieces of the task-7 grader: the test's OWN implementation of the convention in
-// env_light.h (so expected values never come from the code under test), the maps the tests use,
-// and the significance levels.
+// Shared pieces of the task-7 grader: the requests that hand the student's environment code the
+// judge's inputs (tests/judge/protocol.h), the maps the tests use, and the significance levels.
+// Expected values never come from the code under test: they are closed forms, or the reference's
+// (the judge links the reference of every task, so uv_to_direction and direction_to_uv called here
+// are the reference's).
 #include "env_light.h"
+#include "judge.h"
 #include "rng.h"
 #include "statistics.h"
 
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace env_test {
 
@@ -28,25 +32,59 @@ inline double z_critical() {
 	return stats::two_sided_z(stats::sidak(ALPHA, Z_TESTS));
 }
 
-// ---- The convention of env_light.h, in double precision ----------------------------------------
+// ---- Inputs ----------------------------------------------------------------------------------------
 
-inline Vec3 direction_at(double theta, double phi) {
-	return Vec3(float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)), float(std::sin(theta) * std::sin(phi)));
+// The direction through image point (x, y) of a w x h map, in texel units: texel (i, j) spans
+// [i, i + 1) x [j, j + 1) (the reference's uv_to_direction).
+inline Vec3 direction_at_texel_point(uint32_t w, uint32_t h, double x, double y) {
+	return uv_to_direction(Vec2(float(x / w), float(y / h)));
 }
-inline Vec3 direction_at_uv(double u, double v) {
-	return direction_at(M_PI * v, 2.0 * M_PI * u);
+
+// The seed of a test case's random numbers: `public_seed`, or one drawn from the grading seed.
+inline uint64_t sampling_seed(const std::string& what, uint64_t public_seed) {
+	if (!judge::secret_seed()) return public_seed;
+	RNG rng = judge::case_generator(what + ": sampling seed");
+	return uint64_t(rng.integer()) << 32 | rng.integer();
 }
-// The direction through image point (x, y) in texel units: texel (i, j) spans [i, i + 1) x [j, j + 1).
-inline Vec3 direction_at_texel_point(const HDR_Image& image, double x, double y) {
-	return direction_at_uv(x / image.w, y / image.h);
+
+// n points rng.unit2() of a generator seeded with `seed`, in order.
+inline std::vector<Vec2> unit_points(uint64_t seed, size_t n) {
+	RNG rng(seed);
+	std::vector<Vec2> us(n);
+	for (Vec2& u : us) u = rng.unit2();
+	return us;
 }
-// (u, v) of a direction, u in [0, 1), v in [0, 1].
-inline Vec2 uv_of(Vec3 d) {
-	double theta = std::atan2(std::sqrt(double(d.x) * d.x + double(d.z) * d.z), double(d.y));
-	double phi = std::atan2(double(d.z), double(d.x));
-	if (phi < 0.0) phi += 2.0 * M_PI;
-	double u = phi / (2.0 * M_PI);
-	return Vec2(float(u >= 1.0 ? 0.0 : u), float(theta / M_PI));
+
+// ---- Requests --------------------------------------------------------------------------------------
+
+inline protocol::Sampler_Answer student_uniform(const std::vector<Vec2>& us, const std::vector<Vec3>& dirs) {
+	return judge::ask(protocol::Uniform_Sphere{us, dirs});
+}
+
+inline protocol::Image_Sampler::Answer student_image_sampler(const HDR_Image& image, const std::vector<Vec2>& us,
+                                                             const std::vector<Vec3>& dirs) {
+	return judge::ask(protocol::Image_Sampler{image, us, dirs});
+}
+
+inline protocol::Env_Map_Queries::Answer student_env_map(const HDR_Image& image, bool importance_sampling,
+                                                         const std::vector<Vec2>& us, const std::vector<Vec3>& dirs) {
+	return judge::ask(protocol::Env_Map_Queries{image, importance_sampling, us, dirs});
+}
+
+// The student's Env_Map(image, importance_sampling): sample(u) for each u, then pdf and evaluate
+// at those samples (two requests: the second needs the first's answer).
+struct Env_Samples {
+	std::vector<Vec3> directions;
+	std::vector<float> pdfs;
+	std::vector<Spectrum> radiance;
+};
+inline Env_Samples student_env_samples(const HDR_Image& image, bool importance_sampling, const std::vector<Vec2>& us) {
+	Env_Samples result;
+	result.directions = student_env_map(image, importance_sampling, us, {}).queries.samples;
+	protocol::Env_Map_Queries::Answer at = student_env_map(image, importance_sampling, {}, result.directions);
+	result.pdfs = at.queries.pdfs;
+	result.radiance = at.radiance;
+	return result;
 }
 
 // ---- Messages ------------------------------------------------------------------------------------
@@ -71,6 +109,20 @@ inline HDR_Image one_texel_map(uint32_t w, uint32_t h, uint32_t i, uint32_t j, S
 	return image;
 }
 
+// The bright texel of the 32 x 16 one-texel maps away from the seam and the poles: (11, 6), or with
+// a grading seed any texel at least one texel from them.
+struct Texel {
+	uint32_t i, j;
+};
+inline Texel inner_bright_texel() {
+	if (!judge::secret_seed()) return Texel{11, 6};
+	RNG rng = judge::case_generator("bright texel");
+	return Texel{1 + rng.integer(30), 1 + rng.integer(14)};
+}
+inline std::string texel_name(Texel t) {
+	return "texel (" + std::to_string(t.i) + ", " + std::to_string(t.j) + ")";
+}
+
 // A smooth, coloured, everywhere-positive map.
 inline HDR_Image gradient_map(uint32_t w = 32, uint32_t h = 16) {
 	HDR_Image image(w, h);
@@ -83,9 +135,17 @@ inline HDR_Image gradient_map(uint32_t w = 32, uint32_t h = 16) {
 	return image;
 }
 
-// An outdoor scene in miniature: a sky brightening towards the horizon, a dark ground, and a small
-// sun 500 times brighter than the sky (like the HDR maps shipped with the lab, at low resolution).
-inline HDR_Image sky_map(uint32_t w = 64, uint32_t h = 32) {
+// An outdoor scene in miniature, 64 x 32: a sky brightening towards the horizon, a dark ground, and
+// a small sun (2 x 2 texels) 500 times brighter than the sky (like the HDR maps shipped with the
+// lab, at low resolution). The sun's top-left texel is (40, 9), or with a grading seed anywhere in
+// the sky.
+inline HDR_Image sky_map() {
+	const uint32_t w = 64, h = 32;
+	Texel sun{40, 9};
+	if (judge::secret_seed()) {
+		RNG rng = judge::case_generator("sun");
+		sun = Texel{rng.integer(w - 1), rng.integer(h / 2 - 1)};
+	}
 	HDR_Image image(w, h);
 	for (uint32_t j = 0; j < h; j++) {
 		for (uint32_t i = 0; i < w; i++) {
@@ -93,8 +153,8 @@ inline HDR_Image sky_map(uint32_t w = 64, uint32_t h = 32) {
 			image.at(i, j) = v < 0.5f ? Spectrum{0.3f, 0.5f, 1.0f} * (0.5f + v) : Spectrum{0.05f, 0.04f, 0.03f};
 		}
 	}
-	for (uint32_t j = 9; j <= 10; j++) {
-		for (uint32_t i = 40; i <= 41; i++) image.at(i, j) = Spectrum{500.0f, 480.0f, 450.0f};
+	for (uint32_t j = sun.j; j <= sun.j + 1; j++) {
+		for (uint32_t i = sun.i; i <= sun.i + 1; i++) image.at(i, j) = Spectrum{500.0f, 480.0f, 450.0f};
 	}
 	return image;
 }

@@ -14,26 +14,30 @@ namespace {
 constexpr uint32_t W = 32, H = 16;
 
 struct Bright_Texel {
-	const char* name;
+	std::string name;
 	uint32_t i, j;
+
+	HDR_Image map() const {
+		return one_texel_map(W, H, i, j);
+	}
 };
-const Bright_Texel CASES[] = {{"texel (11, 6)", 11, 6}, {"texel (0, 0), at the seam and the north pole", 0, 0}};
+
+// Texel (11, 6) (with a grading seed, another texel away from the seam and the poles), and texel
+// (0, 0).
+std::vector<Bright_Texel> cases() {
+	Texel inner = inner_bright_texel();
+	return {{texel_name(inner), inner.i, inner.j}, {"texel (0, 0), at the seam and the north pole", 0, 0}};
+}
 
 double tent(double t) {
 	return std::max(0.0, 1.0 - std::abs(t));
 }
 
-// The radiance of the map (value 1 at texel (i, j)) at image point (x, y) in texel units, in closed
-// form: bilinear interpolation is the product of two tents around the texel's centre, taken around
-// the seam in x (wrap) and with y clamped to the first and last rows of centres (handout §7.3).
-double radiance(const Bright_Texel& t, double x, double y) {
-	double dx = std::remainder(x - 0.5 - t.i, double(W)); // signed distance around the seam
-	double yc = std::clamp(y - 0.5, 0.0, double(H - 1));
-	return tent(dx) * tent(yc - t.j);
-}
-
-// Integral of that radiance over the sphere: (2 pi / W) for the tent in phi, times the integral of
-// the tent in theta against sin(theta) (Simpson's rule, far more accurate than needed).
+// Integral over the sphere of the map's radiance (value 1 at texel (i, j)): bilinear interpolation
+// is the product of two tents around the texel's centre, one in x (around the seam) and one in y
+// clamped to the first and last rows of centres (handout §7.3). That is (2 pi / W) for the tent in
+// phi, times the integral of the tent in theta against sin(theta) (Simpson's rule, far more
+// accurate than needed).
 double radiance_integral(const Bright_Texel& t) {
 	const int n = 200000;
 	const double d = M_PI / n;
@@ -46,9 +50,9 @@ double radiance_integral(const Bright_Texel& t) {
 	return (2.0 * M_PI / W) * sum * d / 3.0;
 }
 
-// The texel containing a direction, by this test's own convention.
+// The texel containing a direction (by the reference's direction_to_uv).
 void texel_of(Vec3 d, int64_t& i, int64_t& j) {
-	Vec2 uv = uv_of(d);
+	Vec2 uv = direction_to_uv(d);
 	i = std::min<int64_t>(int64_t(uv.x * W), W - 1);
 	j = std::min<int64_t>(int64_t(uv.y * H), H - 1);
 }
@@ -64,14 +68,13 @@ bool in_reach(const Bright_Texel& t, int64_t i, int64_t j) {
 } // namespace
 
 TEST_CASE("one bright texel: importance samples stay in the texels its light reaches", "[task7][bright-texel]") {
-	for (const Bright_Texel& t : CASES) {
-		Samplers::Sphere::Image sampler(one_texel_map(W, H, t.i, t.j));
-		RNG rng(78);
+	for (const Bright_Texel& t : cases()) {
 		const size_t N = 100000;
+		std::vector<Vec3> samples =
+			student_image_sampler(t.map(), unit_points(sampling_seed("bright texel reach", 78), N), {}).queries.samples;
 		size_t outside = 0;
 		std::string first;
-		for (size_t n = 0; n < N; n++) {
-			Vec3 d = sampler.sample(rng.unit2());
+		for (Vec3 d : samples) {
 			int64_t i, j;
 			texel_of(d, i, j);
 			if (!in_reach(t, i, j) && outside++ == 0) first = "direction " + str(d) + " in texel (" + std::to_string(i) + ", " + std::to_string(j) + ")";
@@ -92,31 +95,43 @@ TEST_CASE("one bright texel: the pdf is positive wherever its radiance is, and L
 	// table that follows the lookup keeps L / pdf within a small multiple of the integral of L:
 	// the exact texel average of handout §7.4 reaches 16 times (diagonal neighbours: 1/4 of the
 	// radiance, 1/64 of the probability), the 3 x 3 maximum 9 times. Allowed: 32 times. A pdf that
-	// is merely floored at a tiny value goes far beyond.
-	for (const Bright_Texel& t : CASES) {
-		Samplers::Sphere::Image sampler(one_texel_map(W, H, t.i, t.j));
+	// is merely floored at a tiny value goes far beyond. L is the reference's bilinear lookup.
+	for (const Bright_Texel& t : cases()) {
 		const double bound = 32.0 * radiance_integral(t);
-		RNG rng(79);
-		size_t zero_pdf = 0, unbounded = 0, tested = 0;
-		std::string first_zero, first_unbounded;
+		Env_Map reference(t.map(), false);
+		RNG rng(sampling_seed("bright texel pdf", 79));
+		struct Point {
+			double x, y, L;
+			Vec3 d;
+		};
+		std::vector<Point> points;
+		std::vector<Vec3> dirs;
 		for (int n = 0; n < 20000; n++) {
 			// A random image point within one texel of the bright centre (where the radiance is > 0).
 			double x = t.i + 0.5 + (2.0 * rng.unit() - 1.0), y = t.j + 0.5 + (2.0 * rng.unit() - 1.0);
 			y = std::clamp(y, 1e-3, H - 1e-3);
-			double L = radiance(t, x, y);
+			Vec3 d = direction_at_texel_point(W, H, x, y);
+			double L = reference.evaluate(d).g;
 			if (L < 1e-3) continue; // stay clear of the support's edge, where rounding decides
-			tested++;
-			Vec3 d = direction_at_uv(x / W, y / H);
-			float pdf = sampler.pdf(d);
+			points.push_back({x, y, L, d});
+			dirs.push_back(d);
+		}
+		std::vector<float> pdfs = student_image_sampler(t.map(), {}, dirs).queries.pdfs;
+		size_t zero_pdf = 0, unbounded = 0;
+		std::string first_zero, first_unbounded;
+		for (size_t n = 0; n < points.size(); n++) {
+			const Point& p = points[n];
+			float pdf = pdfs[n];
 			std::ostringstream where;
-			where << "direction " << str(d) << " (image point " << x << ", " << y << "): radiance " << L << ", pdf " << pdf;
+			where << "direction " << str(p.d) << " (image point " << p.x << ", " << p.y << "): radiance " << p.L
+			      << ", pdf " << pdf;
 			if (!(pdf > 0.0f)) {
 				if (zero_pdf++ == 0) first_zero = where.str();
-			} else if (!(L / pdf <= bound)) {
-				if (unbounded++ == 0) first_unbounded = where.str() + ", L / pdf " + std::to_string(L / pdf);
+			} else if (!(p.L / pdf <= bound)) {
+				if (unbounded++ == 0) first_unbounded = where.str() + ", L / pdf " + std::to_string(p.L / pdf);
 			}
 		}
-		INFO("map of " << W << " x " << H << " texels, black except " << t.name << "; " << tested
+		INFO("map of " << W << " x " << H << " texels, black except " << t.name << "; " << points.size()
 		               << " directions where its bilinear radiance is positive");
 		{
 			INFO(zero_pdf << " of them have pdf 0 (first: " << first_zero
@@ -135,16 +150,15 @@ TEST_CASE("one bright texel: the pdf is positive wherever its radiance is, and L
 TEST_CASE("one bright texel: the weights L / pdf average the integral of its radiance", "[task7][bright-texel][statistical]") {
 	// E[L / pdf] over importance samples = the integral of L over the directions where pdf > 0: all
 	// of it only if the pdf covers the whole bilinear footprint (two of the grader's z-tests).
-	for (const Bright_Texel& t : CASES) {
-		Env_Map env(one_texel_map(W, H, t.i, t.j), true);
+	for (const Bright_Texel& t : cases()) {
 		const size_t N = 200000;
-		RNG rng(80);
+		std::vector<Vec2> us = unit_points(sampling_seed("bright texel weights", 80), N);
+		Env_Samples samples = student_env_samples(t.map(), true, us);
 		double sum = 0.0, sum2 = 0.0;
 		size_t not_finite = 0;
 		for (size_t n = 0; n < N; n++) {
-			Vec3 d = env.sample(rng.unit2());
-			float pdf = env.pdf(d);
-			double weight = pdf > 0.0f ? double(env.evaluate(d).g) / pdf : 0.0; // a renderer skips pdf = 0
+			float pdf = samples.pdfs[n];
+			double weight = pdf > 0.0f ? double(samples.radiance[n].g) / pdf : 0.0; // a renderer skips pdf = 0
 			if (!std::isfinite(weight)) {
 				not_finite++;
 				continue;

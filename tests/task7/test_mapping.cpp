@@ -14,6 +14,13 @@ float u_distance(float a, float b) {
 	float d = std::abs(a - b);
 	return std::min(d, 1.0f - d);
 }
+
+std::vector<Vec2> student_uvs(const std::vector<Vec3>& dirs) {
+	return judge::ask(protocol::Direction_To_UV{dirs});
+}
+std::vector<Vec3> student_directions(const std::vector<Vec2>& uvs) {
+	return judge::ask(protocol::UV_To_Direction{uvs});
+}
 } // namespace
 
 TEST_CASE("direction_to_uv: known directions land where the convention puts them", "[task7][mapping]") {
@@ -29,20 +36,26 @@ TEST_CASE("direction_to_uv: known directions land where the convention puts them
 		{{0, 0, -1}, {0.75f, 0.5f}, "-z (phi = 3 pi / 2)"},
 		{glm::normalize(Vec3{1, 1, 1}), {0.125f, float(std::acos(1.0 / std::sqrt(3.0)) / M_PI)}, "(1, 1, 1) / sqrt 3"},
 	};
-	for (const Known& k : known) {
-		Vec2 uv = direction_to_uv(k.dir);
+	std::vector<Vec3> dirs;
+	for (const Known& k : known) dirs.push_back(k.dir);
+	dirs.push_back(Vec3{0, 1, 0});
+	dirs.push_back(Vec3{0, -1, 0});
+	std::vector<Vec2> uvs = student_uvs(dirs);
+	for (size_t n = 0; n < std::size(known); n++) {
+		const Known& k = known[n];
+		Vec2 uv = uvs[n];
 		INFO("direction_to_uv" << str(k.dir) << " [" << k.name << "] returned " << str(uv) << ", expected "
 		                       << str(k.uv) << ": theta = acos(y) / pi, phi = atan2(z, x) / (2 pi) (handout §7.1)");
 		CHECK(u_distance(uv.x, k.uv.x) <= UV_TOLERANCE);
 		CHECK(std::abs(uv.y - k.uv.y) <= UV_TOLERANCE);
 	}
 	{
-		Vec2 up = direction_to_uv(Vec3{0, 1, 0});
+		Vec2 up = uvs[std::size(known)];
 		INFO("direction_to_uv(+y) returned " << str(up) << ": straight up is theta = 0, so v = 0 (handout §7.1)");
 		CHECK(std::abs(up.y) <= UV_TOLERANCE);
 	}
 	{
-		Vec2 down = direction_to_uv(Vec3{0, -1, 0});
+		Vec2 down = uvs[std::size(known) + 1];
 		INFO("direction_to_uv(-y) returned " << str(down) << ": straight down is theta = pi, so v = 1 (handout §7.1)");
 		CHECK(std::abs(down.y - 1.0f) <= UV_TOLERANCE);
 	}
@@ -57,8 +70,12 @@ TEST_CASE("uv_to_direction: known uv give the directions of the convention", "[t
 		{{0.0f, 0.5f}, {1, 0, 0}},  {{0.25f, 0.5f}, {0, 0, 1}}, {{0.5f, 0.5f}, {-1, 0, 0}},
 		{{0.75f, 0.5f}, {0, 0, -1}}, {{0.3f, 0.0f}, {0, 1, 0}}, {{0.6f, 1.0f}, {0, -1, 0}},
 	};
-	for (const Known& k : known) {
-		Vec3 d = uv_to_direction(k.uv);
+	std::vector<Vec2> uvs;
+	for (const Known& k : known) uvs.push_back(k.uv);
+	std::vector<Vec3> dirs = student_directions(uvs);
+	for (size_t n = 0; n < std::size(known); n++) {
+		const Known& k = known[n];
+		Vec3 d = dirs[n];
 		INFO("uv_to_direction" << str(k.uv) << " returned " << str(d) << ", expected " << str(k.dir)
 		                       << ": dir = (sin theta cos phi, cos theta, sin theta sin phi), theta = pi v, "
 		                          "phi = 2 pi u (handout §7.1)");
@@ -67,19 +84,25 @@ TEST_CASE("uv_to_direction: known uv give the directions of the convention", "[t
 }
 
 TEST_CASE("uv_to_direction and direction_to_uv are each other's inverse", "[task7][mapping]") {
-	RNG rng(71);
-	int bad_directions = 0, bad_round_trips = 0;
-	std::string first_direction, first_round_trip;
+	RNG rng(sampling_seed("inverse", 71));
+	std::vector<Vec2> uvs;
+	std::vector<Vec3> expected_dirs;
 	for (int n = 0; n < 10000; n++) {
 		// Away from the poles, where u is undefined.
-		Vec2 uv{rng.unit(), 0.01f + 0.98f * rng.unit()};
-		Vec3 d = uv_to_direction(uv);
-		Vec3 expected = direction_at_uv(uv.x, uv.y);
+		uvs.push_back(Vec2{rng.unit(), 0.01f + 0.98f * rng.unit()});
+		expected_dirs.push_back(uv_to_direction(uvs.back()));
+	}
+	std::vector<Vec3> dirs = student_directions(uvs);
+	std::vector<Vec2> backs = student_uvs(expected_dirs);
+	int bad_directions = 0, bad_round_trips = 0;
+	std::string first_direction, first_round_trip;
+	for (size_t n = 0; n < uvs.size(); n++) {
+		Vec2 uv = uvs[n], back = backs[n];
+		Vec3 d = dirs[n], expected = expected_dirs[n];
 		if (!(glm::length(d - expected) <= 1e-5f)) {
 			if (bad_directions++ == 0)
 				first_direction = "uv_to_direction" + str(uv) + " = " + str(d) + ", expected " + str(expected);
 		}
-		Vec2 back = direction_to_uv(expected);
 		if (!(u_distance(back.x, uv.x) <= UV_TOLERANCE && std::abs(back.y - uv.y) <= UV_TOLERANCE)) {
 			if (bad_round_trips++ == 0)
 				first_round_trip = "direction_to_uv" + str(expected) + " = " + str(back) + ", expected " + str(uv);
@@ -100,20 +123,22 @@ TEST_CASE("uv_to_direction and direction_to_uv are each other's inverse", "[task
 TEST_CASE("direction_to_uv: u stays in [0, 1) and v in [0, 1], also just below phi = 0", "[task7][mapping]") {
 	// atan2 returns angles in [-pi, pi]: negative angles need 2 pi added, and a tiny negative angle
 	// plus 2 pi rounds to 2 pi, which is u = 1 (the same meridian as u = 0).
-	RNG rng(72);
+	std::vector<Vec3> dirs;
+	for (float z : {-1e-3f, -1e-6f, -1e-9f, -1e-20f, -0.0f, 0.0f}) {
+		dirs.push_back(glm::normalize(Vec3{1.0f, 0.3f, z}));
+		dirs.push_back(glm::normalize(Vec3{1.0f, -0.7f, z}));
+	}
+	RNG rng(sampling_seed("u range", 72));
+	for (int n = 0; n < 10000; n++) dirs.push_back(uv_to_direction(rng.unit2()));
+	std::vector<Vec2> uvs = student_uvs(dirs);
 	int bad = 0;
 	std::string first;
-	auto check = [&](Vec3 d) {
-		Vec2 uv = direction_to_uv(d);
+	for (size_t n = 0; n < dirs.size(); n++) {
+		Vec2 uv = uvs[n];
 		if (!(uv.x >= 0.0f && uv.x < 1.0f && uv.y >= 0.0f && uv.y <= 1.0f)) {
-			if (bad++ == 0) first = "direction_to_uv" + str(d) + " = " + str(uv);
+			if (bad++ == 0) first = "direction_to_uv" + str(dirs[n]) + " = " + str(uv);
 		}
-	};
-	for (float z : {-1e-3f, -1e-6f, -1e-9f, -1e-20f, -0.0f, 0.0f}) {
-		check(glm::normalize(Vec3{1.0f, 0.3f, z}));
-		check(glm::normalize(Vec3{1.0f, -0.7f, z}));
 	}
-	for (int n = 0; n < 10000; n++) check(direction_at_uv(rng.unit(), rng.unit()));
 	INFO("uv must lie in [0, 1) x [0, 1] (env_light.h): wrap u = 1 back to 0 (handout §7.1); " << bad
 	                                                                                           << " failures, first: " << first);
 	CHECK(bad == 0);

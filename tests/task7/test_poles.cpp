@@ -9,7 +9,7 @@ using namespace env_test;
 namespace {
 // Exactly at the poles, at the two signs of zero, and at tiny distances from the axis (sin(theta)
 // from 1e-7 down to 1e-30 and to values whose square underflows).
-const Vec3 NEAR_POLES[] = {
+const std::vector<Vec3> NEAR_POLES{
 	{0.0f, 1.0f, 0.0f},   {0.0f, -1.0f, 0.0f},  {-0.0f, 1.0f, -0.0f}, {-0.0f, -1.0f, 0.0f},
 	{1e-7f, 1.0f, 0.0f},  {0.0f, -1.0f, 1e-7f}, {1e-20f, 1.0f, 0.0f}, {-1e-20f, -1.0f, 1e-20f},
 	{0.0f, 1.0f, 1e-30f}, {1e-30f, -1.0f, 0.0f}, {3e-39f, 1.0f, 0.0f},
@@ -17,29 +17,34 @@ const Vec3 NEAR_POLES[] = {
 
 struct Named_Env {
 	const char* name;
-	Env_Map env;
+	HDR_Image image;
+	bool importance_sampling;
 };
 } // namespace
 
 TEST_CASE("no NaN or infinity at the poles: direction_to_uv, evaluate and pdf", "[task7][poles]") {
-	const Named_Env envs[] = {{"a gradient, importance-sampled", Env_Map(gradient_map(), true)},
-	                          {"one bright texel at the north pole, importance-sampled", Env_Map(one_texel_map(32, 16, 5, 0), true)},
-	                          {"one bright texel at the south pole, importance-sampled", Env_Map(one_texel_map(32, 16, 5, 15), true)},
-	                          {"a gradient, uniformly sampled", Env_Map(gradient_map(), false)}};
-	for (Vec3 d : NEAR_POLES) {
-		Vec2 uv = direction_to_uv(d);
+	const Named_Env envs[] = {{"a gradient, importance-sampled", gradient_map(), true},
+	                          {"one bright texel at the north pole, importance-sampled", one_texel_map(32, 16, 5, 0), true},
+	                          {"one bright texel at the south pole, importance-sampled", one_texel_map(32, 16, 5, 15), true},
+	                          {"a gradient, uniformly sampled", gradient_map(), false}};
+	std::vector<Vec2> uvs = judge::ask(protocol::Direction_To_UV{NEAR_POLES});
+	std::vector<protocol::Env_Map_Queries::Answer> answers;
+	for (const Named_Env& e : envs) answers.push_back(student_env_map(e.image, e.importance_sampling, {}, NEAR_POLES));
+	for (size_t n = 0; n < NEAR_POLES.size(); n++) {
+		Vec3 d = NEAR_POLES[n];
+		Vec2 uv = uvs[n];
 		INFO("direction_to_uv" << str(d) << " = " << str(uv)
 		                       << ": must be finite, v in [0, 1] (use atan2 or clamp the argument of acos, handout §7.1)");
 		CHECK(std::isfinite(uv.x));
 		CHECK(std::isfinite(uv.y));
 		CHECK(uv.y >= 0.0f);
 		CHECK(uv.y <= 1.0f);
-		for (const Named_Env& e : envs) {
-			Spectrum L = e.env.evaluate(d);
-			float pdf = e.env.pdf(d);
-			INFO(e.name << ": direction " << str(d) << ", evaluate = " << str(L) << ", pdf = " << pdf
-			            << ". At the poles sin(theta) = 0: evaluate clamps the row (handout §7.3), pdf returns 0 "
-			               "instead of dividing by 0 (handout §7.4)");
+		for (size_t m = 0; m < std::size(envs); m++) {
+			Spectrum L = answers[m].radiance[n];
+			float pdf = answers[m].queries.pdfs[n];
+			INFO(envs[m].name << ": direction " << str(d) << ", evaluate = " << str(L) << ", pdf = " << pdf
+			                  << ". At the poles sin(theta) = 0: evaluate clamps the row (handout §7.3), pdf returns 0 "
+			                     "instead of dividing by 0 (handout §7.4)");
 			CHECK(is_finite(L));
 			CHECK(std::isfinite(pdf));
 			CHECK(pdf >= 0.0f);
@@ -49,22 +54,25 @@ TEST_CASE("no NaN or infinity at the poles: direction_to_uv, evaluate and pdf", 
 
 TEST_CASE("no NaN at the poles: sample at the ends of [0, 1)", "[task7][poles]") {
 	// u = 0 and the largest float below 1 put samples on the first and last rows' outer edges.
-	const Named_Env envs[] = {{"a gradient, importance-sampled", Env_Map(gradient_map(), true)},
-	                          {"one bright texel at the north pole", Env_Map(one_texel_map(32, 16, 0, 0), true)},
-	                          {"one bright texel at the south pole", Env_Map(one_texel_map(32, 16, 31, 15), true)},
-	                          {"a gradient, uniformly sampled", Env_Map(gradient_map(), false)}};
+	const Named_Env envs[] = {{"a gradient, importance-sampled", gradient_map(), true},
+	                          {"one bright texel at the north pole", one_texel_map(32, 16, 0, 0), true},
+	                          {"one bright texel at the south pole", one_texel_map(32, 16, 31, 15), true},
+	                          {"a gradient, uniformly sampled", gradient_map(), false}};
 	const float ends[] = {0.0f, 1e-7f, 0.5f, 1.0f - 1e-7f, 0x1.fffffep-1f};
+	std::vector<Vec2> us;
+	for (float a : ends) {
+		for (float b : ends) us.push_back(Vec2{a, b});
+	}
 	for (const Named_Env& e : envs) {
-		for (float a : ends) {
-			for (float b : ends) {
-				Vec3 d = e.env.sample(Vec2{a, b});
-				float pdf = e.env.pdf(d);
-				INFO(e.name << ": sample(" << a << ", " << b << ") = " << str(d) << " with pdf " << pdf
-				            << "; must be a finite unit direction with a finite pdf (handouts §7.2, §7.4)");
-				CHECK(is_finite(d));
-				CHECK(glm::length(d) == Approx(1.0f).epsilon(1e-4));
-				CHECK(std::isfinite(pdf));
-			}
+		Env_Samples samples = student_env_samples(e.image, e.importance_sampling, us);
+		for (size_t n = 0; n < us.size(); n++) {
+			Vec3 d = samples.directions[n];
+			float pdf = samples.pdfs[n];
+			INFO(e.name << ": sample(" << us[n].x << ", " << us[n].y << ") = " << str(d) << " with pdf " << pdf
+			            << "; must be a finite unit direction with a finite pdf (handouts §7.2, §7.4)");
+			CHECK(is_finite(d));
+			CHECK(glm::length(d) == Approx(1.0f).epsilon(1e-4));
+			CHECK(std::isfinite(pdf));
 		}
 	}
 }

@@ -10,38 +10,51 @@ using namespace env_test;
 namespace {
 constexpr float UNIFORM_PDF = float(1.0 / (4.0 * M_PI));
 
-const Vec3 SOME_DIRECTIONS[] = {{0, 1, 0}, {0, -1, 0}, {1, 0, 0}, {0, 0, -1}, {0.6f, 0.0f, 0.8f}, {0.48f, 0.6f, -0.64f}};
+// The poles, the axes and two directions between them; with a grading seed, six directions drawn
+// uniformly (the reference's uniform sampler).
+std::vector<Vec3> some_directions() {
+	if (!judge::secret_seed()) {
+		return {{0, 1, 0}, {0, -1, 0}, {1, 0, 0}, {0, 0, -1}, {0.6f, 0.0f, 0.8f}, {0.48f, 0.6f, -0.64f}};
+	}
+	RNG rng = judge::case_generator("some directions");
+	std::vector<Vec3> dirs;
+	for (int n = 0; n < 6; n++) dirs.push_back(Samplers::Sphere::Uniform{}.sample(rng.unit2()));
+	return dirs;
+}
 } // namespace
 
 TEST_CASE("Uniform::pdf is 1 / (4 pi) in every direction", "[task7][uniform]") {
-	Samplers::Sphere::Uniform uniform;
-	for (Vec3 d : SOME_DIRECTIONS) {
-		INFO("Uniform::pdf" << str(d) << " = " << uniform.pdf(d)
-		                    << ", expected 1 / (4 pi) = " << UNIFORM_PDF << ": the sphere's area is 4 pi (handout §7.2)");
-		CHECK(uniform.pdf(d) == Approx(UNIFORM_PDF).epsilon(1e-6));
+	std::vector<Vec3> dirs = some_directions();
+	std::vector<float> pdfs = student_uniform({}, dirs).pdfs;
+	for (size_t n = 0; n < dirs.size(); n++) {
+		INFO("Uniform::pdf" << str(dirs[n]) << " = " << pdfs[n] << ", expected 1 / (4 pi) = " << UNIFORM_PDF
+		                    << ": the sphere's area is 4 pi (handout §7.2)");
+		CHECK(pdfs[n] == Approx(UNIFORM_PDF).epsilon(1e-6));
 	}
 }
 
 TEST_CASE("Uniform::sample returns unit directions, even for u at the ends of [0, 1)", "[task7][uniform]") {
-	Samplers::Sphere::Uniform uniform;
 	const float ends[] = {0.0f, 0.5f, 0x1.fffffep-1f};
+	std::vector<Vec2> us;
 	for (float a : ends) {
-		for (float b : ends) {
-			Vec3 d = uniform.sample(Vec2{a, b});
-			INFO("Uniform::sample(" << a << ", " << b << ") = " << str(d)
-			                        << ": must be a finite unit vector (handout §7.2)");
-			CHECK(is_finite(d));
-			CHECK(glm::length(d) == Approx(1.0f).epsilon(1e-5));
-		}
+		for (float b : ends) us.push_back(Vec2{a, b});
+	}
+	std::vector<Vec3> samples = student_uniform(us, {}).samples;
+	for (size_t n = 0; n < us.size(); n++) {
+		Vec3 d = samples[n];
+		INFO("Uniform::sample(" << us[n].x << ", " << us[n].y << ") = " << str(d)
+		                        << ": must be a finite unit vector (handout §7.2)");
+		CHECK(is_finite(d));
+		CHECK(glm::length(d) == Approx(1.0f).epsilon(1e-5));
 	}
 }
 
 TEST_CASE("Uniform::sample covers the sphere uniformly (chi-square)", "[task7][uniform][statistical]") {
-	Samplers::Sphere::Uniform uniform;
 	stats::Sphere_Chi2_Settings settings;
-	settings.seed = 73;
-	auto result = stats::sphere_chi2([&](RNG& rng) { return uniform.sample(rng.unit2()); },
-	                                 [&](Vec3 d) { return uniform.pdf(d); }, settings);
+	settings.seed = sampling_seed("uniform chi-square", 73);
+	protocol::Sampler_Answer answer =
+		student_uniform(unit_points(settings.seed, settings.samples), stats::sphere_chi2_pdf_directions(settings));
+	auto result = stats::sphere_chi2(answer.samples, answer.pdfs, settings);
 	INFO("Uniform::sample must be distributed with the density Uniform::pdf (handout §7.2: y = 1 - 2 u uniform in "
 	     "[-1, 1], phi = 2 pi u uniform): "
 	     << result.summary() << "; significance " << chi2_alpha());
@@ -50,40 +63,47 @@ TEST_CASE("Uniform::sample covers the sphere uniformly (chi-square)", "[task7][u
 
 TEST_CASE("Env_Constant samples uniformly: its pdf is 1 / (4 pi)", "[task7][uniform]") {
 	// Env_Constant (framework) delegates to Samplers::Sphere::Uniform.
-	Env_Constant env;
-	for (Vec3 d : SOME_DIRECTIONS) {
-		INFO("Env_Constant::pdf" << str(d) << " = " << env.pdf(d) << ", expected 1 / (4 pi): Uniform::pdf (handout §7.2)");
-		CHECK(env.pdf(d) == Approx(UNIFORM_PDF).epsilon(1e-6));
+	std::vector<Vec3> dirs = some_directions();
+	std::vector<float> pdfs = judge::ask(protocol::Env_Constant_Queries{Spectrum{1.0f}, {}, dirs}).queries.pdfs;
+	for (size_t n = 0; n < dirs.size(); n++) {
+		INFO("Env_Constant::pdf" << str(dirs[n]) << " = " << pdfs[n] << ", expected 1 / (4 pi): Uniform::pdf (handout §7.2)");
+		CHECK(pdfs[n] == Approx(UNIFORM_PDF).epsilon(1e-6));
 	}
 }
 
 TEST_CASE("Env_Map without importance sampling samples the sphere uniformly", "[task7][uniform]") {
-	Env_Map env(gradient_map(), false);
-	for (Vec3 d : SOME_DIRECTIONS) {
-		INFO("Env_Map::pdf" << str(d) << " = " << env.pdf(d)
+	std::vector<Vec3> dirs = some_directions();
+	std::vector<Vec2> us = unit_points(sampling_seed("Env_Map uniform", 74), 100);
+	protocol::Env_Map_Queries::Answer env = student_env_map(gradient_map(), false, us, dirs);
+	for (size_t n = 0; n < dirs.size(); n++) {
+		INFO("Env_Map::pdf" << str(dirs[n]) << " = " << env.queries.pdfs[n]
 		                    << " with importance_sampling off; expected the uniform 1 / (4 pi) (handout §7.2)");
-		CHECK(env.pdf(d) == Approx(UNIFORM_PDF).epsilon(1e-6));
+		CHECK(env.queries.pdfs[n] == Approx(UNIFORM_PDF).epsilon(1e-6));
 	}
-	RNG rng(74);
-	Samplers::Sphere::Uniform uniform;
-	for (int n = 0; n < 100; n++) {
-		Vec2 u = rng.unit2();
-		INFO("Env_Map::sample" << str(u) << " = " << str(env.sample(u)) << " with importance_sampling off; expected "
-		                       << "Samplers::Sphere::Uniform's sample " << str(uniform.sample(u)) << " (handout §7.2)");
-		REQUIRE(env.sample(u) == uniform.sample(u));
+	std::vector<Vec3> uniform = student_uniform(us, {}).samples;
+	for (size_t n = 0; n < us.size(); n++) {
+		INFO("Env_Map::sample" << str(us[n]) << " = " << str(env.queries.samples[n])
+		                       << " with importance_sampling off; expected Samplers::Sphere::Uniform's sample "
+		                       << str(uniform[n]) << " (handout §7.2)");
+		REQUIRE(env.queries.samples[n] == uniform[n]);
 	}
 }
 
 TEST_CASE("Env_Map with importance sampling uses its Image sampler", "[task7][uniform]") {
-	Env_Map env(gradient_map(), true);
-	RNG rng(75);
-	for (int n = 0; n < 100; n++) {
-		Vec2 u = rng.unit2();
-		Vec3 d = env.sampler.sample(u);
+	// The pdfs are compared at directions spread like importance samples (the reference's).
+	HDR_Image image = gradient_map();
+	std::vector<Vec2> us = unit_points(sampling_seed("Env_Map importance", 75), 100);
+	std::vector<Vec3> dirs;
+	Samplers::Sphere::Image reference(image);
+	for (Vec2 u : us) dirs.push_back(reference.sample(u));
+	protocol::Env_Map_Queries::Answer env = student_env_map(image, true, us, dirs);
+	protocol::Sampler_Answer sampler = student_image_sampler(image, us, dirs).queries;
+	for (size_t n = 0; n < us.size(); n++) {
 		INFO("with importance_sampling on, Env_Map::sample and pdf must be those of `sampler` (handout §7.4): "
-		     << "sample" << str(u) << " = " << str(env.sample(u)) << " vs sampler.sample = " << str(d) << "; pdf "
-		     << env.pdf(d) << " vs sampler.pdf = " << env.sampler.pdf(d));
-		REQUIRE(env.sample(u) == d);
-		REQUIRE(env.pdf(d) == env.sampler.pdf(d));
+		     << "sample" << str(us[n]) << " = " << str(env.queries.samples[n]) << " vs sampler.sample = "
+		     << str(sampler.samples[n]) << "; pdf " << env.queries.pdfs[n] << " vs sampler.pdf = " << sampler.pdfs[n]
+		     << " at " << str(dirs[n]));
+		REQUIRE(env.queries.samples[n] == sampler.samples[n]);
+		REQUIRE(env.queries.pdfs[n] == sampler.pdfs[n]);
 	}
 }
