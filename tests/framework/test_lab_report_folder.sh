@@ -16,7 +16,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "lab report folder test: $*" >&2; exit 1; }
 
-# Stand-ins: cmake does nothing; grader N writes task<N>.json and an image named after the run
+# Stand-ins: cmake does nothing; judge N writes task<N>.json and an image named after the run
 # (so that two runs write different files); grade_report writes index.html and prints its path.
 build=$tmp/build
 mkdir -p "$tmp/bin" "$build/tests/report"
@@ -28,9 +28,9 @@ echo '{}' >"$LAB_REPORT_DIR/task$LAB_REPORT_TASK.json"
 echo image >"$LAB_REPORT_DIR/task${LAB_REPORT_TASK}_cornell_run$(cat "$LAB_TEST_RUN").png"
 exit 1
 GRADER
-for n in 1 2 3 4 5 6 7; do cp "$tmp/grader" "$build/tests/grader_task${n}_student"; done
+for n in 1 2 3 4 5 6 7; do cp "$tmp/grader" "$build/tests/judge_task$n"; done
 printf '#!/bin/sh\necho page >"$1/index.html"\necho "$1/index.html"\n' >"$build/tests/report/grade_report"
-chmod +x "$tmp/bin/cmake" "$build"/tests/grader_task* "$build/tests/report/grade_report"
+chmod +x "$tmp/bin/cmake" "$build"/tests/judge_task* "$build/tests/report/grade_report"
 
 # report DIR RUN: ./lab report DIR as run number RUN; its status, stdout and stderr in $tmp/lab.*
 report() {
