@@ -189,37 +189,31 @@ std::string Subject::exchange(Kind kind, const std::string& payload) {
 		sent += size_t(n);
 	}
 
-	// The answer: header, then payload.
-	std::string received;
-	const size_t HEADER = 4 * 4 + 8;
-	size_t wanted = HEADER;
-	bool have_header = false;
-	while (received.size() < wanted) {
-		if (!wait_readable(from_subject, request_deadline)) time_is_up();
-		char buffer[1 << 16];
-		ssize_t n = read(from_subject, buffer, std::min(sizeof buffer, wanted - received.size()));
-		if (n < 0 && (errno == EAGAIN || errno == EINTR)) continue;
-		if (n <= 0) fail(kind, "ended before it answered");
-		received.append(buffer, size_t(n));
-		if (!have_header && received.size() == HEADER) {
-			uint32_t magic, answer_kind, answer_sequence, status;
-			uint64_t length;
-			std::memcpy(&magic, received.data(), 4);
-			std::memcpy(&answer_kind, received.data() + 4, 4);
-			std::memcpy(&answer_sequence, received.data() + 8, 4);
-			std::memcpy(&status, received.data() + 12, 4);
-			std::memcpy(&length, received.data() + 16, 8);
-			if (magic != protocol::MAGIC || length > protocol::MAX_PAYLOAD || status > 1) {
-				fail(kind, "wrote something that is not an answer to its answer channel");
-			}
-			if (answer_kind != uint32_t(kind) || answer_sequence != number) fail(kind, "answered out of turn");
-			have_header = true;
-			wanted = HEADER + length;
+	// The answer: header, then payload, read straight into place.
+	auto receive = [&](char* into, size_t size) {
+		for (size_t got = 0; got < size;) {
+			if (!wait_readable(from_subject, request_deadline)) time_is_up();
+			ssize_t n = read(from_subject, into + got, size - got);
+			if (n < 0 && (errno == EAGAIN || errno == EINTR)) continue;
+			if (n <= 0) fail(kind, "ended before it answered");
+			got += size_t(n);
 		}
+	};
+	char header[4 * 4 + 8];
+	receive(header, sizeof header);
+	uint32_t magic, answer_kind, answer_sequence, status;
+	uint64_t length;
+	std::memcpy(&magic, header, 4);
+	std::memcpy(&answer_kind, header + 4, 4);
+	std::memcpy(&answer_sequence, header + 8, 4);
+	std::memcpy(&status, header + 12, 4);
+	std::memcpy(&length, header + 16, 8);
+	if (magic != protocol::MAGIC || length > protocol::MAX_PAYLOAD || status > 1) {
+		fail(kind, "wrote something that is not an answer to its answer channel");
 	}
-	uint32_t status;
-	std::memcpy(&status, received.data() + 12, 4);
-	std::string answer = received.substr(HEADER);
+	if (answer_kind != uint32_t(kind) || answer_sequence != number) fail(kind, "answered out of turn");
+	std::string answer(length, '\0');
+	receive(answer.data(), answer.size());
 	if (protocol::Status(status) == protocol::Status::THREW) {
 		std::string what = answer.substr(0, 2000);
 		if (what.find("bad_alloc") != std::string::npos) {

@@ -24,34 +24,6 @@ std::vector<const Instance*> objects_of(const Scene& scene) {
 
 // ---- Writer ----
 
-void Writer::raw(const void* data, size_t size) {
-	bytes.append(static_cast<const char*>(data), size);
-}
-void Writer::put(bool b) {
-	uint8_t byte = b ? 1 : 0;
-	raw(&byte, 1);
-}
-void Writer::put(uint32_t n) {
-	raw(&n, sizeof n);
-}
-void Writer::put(uint64_t n) {
-	raw(&n, sizeof n);
-}
-void Writer::put(float x) {
-	raw(&x, sizeof x);
-}
-void Writer::put(double x) {
-	raw(&x, sizeof x);
-}
-void Writer::put(Vec2 v) {
-	put(v.x), put(v.y);
-}
-void Writer::put(Vec3 v) {
-	put(v.x), put(v.y), put(v.z);
-}
-void Writer::put(const glm::dvec3& v) {
-	put(v.x), put(v.y), put(v.z);
-}
 void Writer::put(const Mat4& m) {
 	for (int c = 0; c < 4; c++)
 		for (int r = 0; r < 4; r++) put(m[c][r]);
@@ -139,10 +111,8 @@ void Writer::put(const Scene& scene) {
 
 // ---- Reader ----
 
-void Reader::raw(void* data, size_t size) {
-	if (size > bytes.size() - at) throw Malformed("the message ends in the middle of a value");
-	std::memcpy(data, bytes.data() + at, size);
-	at += size;
+void Reader::ends_early() const {
+	throw Malformed("the message ends in the middle of a value");
 }
 size_t Reader::count(size_t item_bytes) {
 	uint64_t n = 0;
@@ -158,27 +128,6 @@ void Reader::get(bool& b) {
 	raw(&byte, 1);
 	if (byte > 1) throw Malformed("a yes/no value of " + std::to_string(byte));
 	b = byte == 1;
-}
-void Reader::get(uint32_t& n) {
-	raw(&n, sizeof n);
-}
-void Reader::get(uint64_t& n) {
-	raw(&n, sizeof n);
-}
-void Reader::get(float& x) {
-	raw(&x, sizeof x);
-}
-void Reader::get(double& x) {
-	raw(&x, sizeof x);
-}
-void Reader::get(Vec2& v) {
-	get(v.x), get(v.y);
-}
-void Reader::get(Vec3& v) {
-	get(v.x), get(v.y), get(v.z);
-}
-void Reader::get(glm::dvec3& v) {
-	get(v.x), get(v.y), get(v.z);
 }
 void Reader::get(Mat4& m) {
 	for (int c = 0; c < 4; c++)

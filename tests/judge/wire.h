@@ -5,6 +5,7 @@
 // Structs of the protocol list their members once, in fields(); framework types are encoded here.
 #include "protocol.h"
 
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -23,15 +24,37 @@ public:
 	std::string bytes;
 
 private:
-	void raw(const void* data, size_t size);
-	void put(bool b);
-	void put(uint32_t n);
-	void put(uint64_t n);
-	void put(float x);
-	void put(double x);
-	void put(Vec2 v);
-	void put(Vec3 v);
-	void put(const glm::dvec3& v);
+	// The primitives are inline: a batch holds millions of them.
+	void raw(const void* data, size_t size) {
+		bytes.append(static_cast<const char*>(data), size);
+	}
+	void put(bool b) {
+		char byte = b ? 1 : 0;
+		raw(&byte, 1);
+	}
+	void put(uint32_t n) {
+		raw(&n, sizeof n);
+	}
+	void put(uint64_t n) {
+		raw(&n, sizeof n);
+	}
+	void put(float x) {
+		raw(&x, sizeof x);
+	}
+	void put(double x) {
+		raw(&x, sizeof x);
+	}
+	void put(Vec2 v) {
+		raw(&v.x, sizeof(float)), raw(&v.y, sizeof(float));
+	}
+	void put(Vec3 v) {
+		float xyz[3] = {v.x, v.y, v.z};
+		raw(xyz, sizeof xyz);
+	}
+	void put(const glm::dvec3& v) {
+		double xyz[3] = {v.x, v.y, v.z};
+		raw(xyz, sizeof xyz);
+	}
 	void put(const Mat4& m);
 	void put(const std::string& s);
 	void put(View view);
@@ -74,17 +97,42 @@ public:
 	void expect_end() const;
 
 private:
-	void raw(void* data, size_t size);
+	void raw(void* data, size_t size) {
+		if (size > bytes.size() - at) ends_early();
+		std::memcpy(data, bytes.data() + at, size);
+		at += size;
+	}
+	[[noreturn]] void ends_early() const;
 	// A count of items each at least `item_bytes` long that the bytes left can hold.
 	size_t count(size_t item_bytes);
 	void get(bool& b);
-	void get(uint32_t& n);
-	void get(uint64_t& n);
-	void get(float& x);
-	void get(double& x);
-	void get(Vec2& v);
-	void get(Vec3& v);
-	void get(glm::dvec3& v);
+	void get(uint32_t& n) {
+		raw(&n, sizeof n);
+	}
+	void get(uint64_t& n) {
+		raw(&n, sizeof n);
+	}
+	void get(float& x) {
+		raw(&x, sizeof x);
+	}
+	void get(double& x) {
+		raw(&x, sizeof x);
+	}
+	void get(Vec2& v) {
+		float xy[2];
+		raw(xy, sizeof xy);
+		v = Vec2(xy[0], xy[1]);
+	}
+	void get(Vec3& v) {
+		float xyz[3];
+		raw(xyz, sizeof xyz);
+		v = Vec3(xyz[0], xyz[1], xyz[2]);
+	}
+	void get(glm::dvec3& v) {
+		double xyz[3];
+		raw(xyz, sizeof xyz);
+		v = glm::dvec3(xyz[0], xyz[1], xyz[2]);
+	}
 	void get(Mat4& m);
 	void get(std::string& s);
 	void get(View& view);
