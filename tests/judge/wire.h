@@ -12,6 +12,15 @@
 
 namespace wire {
 
+// Types whose bytes in memory are exactly their encoding (little-endian IEEE floats, nothing else):
+// vectors of them are copied whole, which matters for batches of millions of samples.
+template<class T> constexpr bool is_float_record = false;
+template<> inline constexpr bool is_float_record<float> = true;
+template<> inline constexpr bool is_float_record<Vec2> = sizeof(Vec2) == 2 * sizeof(float);
+template<> inline constexpr bool is_float_record<Vec3> = sizeof(Vec3) == 3 * sizeof(float);
+static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "the protocol's numbers are little-endian");
+template<> inline constexpr bool is_float_record<Scatter> = sizeof(Scatter) == 6 * sizeof(float);
+
 struct Malformed : std::runtime_error {
 	using std::runtime_error::runtime_error;
 };
@@ -78,7 +87,11 @@ private:
 	void put(const Scene& scene);
 	template<class T> void put(const std::vector<T>& items) {
 		put(uint64_t(items.size()));
-		for (const T& item : items) put(item);
+		if constexpr (is_float_record<T>) {
+			raw(items.data(), items.size() * sizeof(T));
+		} else {
+			for (const T& item : items) put(item);
+		}
 	}
 	// A protocol struct: its fields() only read the members when writing.
 	template<class T> auto put(const T& value) -> decltype(const_cast<T&>(value).fields(*this)) {
@@ -154,8 +167,13 @@ private:
 	void get(Film& film);
 	void get(Scene& scene);
 	template<class T> void get(std::vector<T>& items) {
-		items.resize(count(1));
-		for (T& item : items) get(item);
+		if constexpr (is_float_record<T>) {
+			items.resize(count(sizeof(T)));
+			raw(items.data(), items.size() * sizeof(T));
+		} else {
+			items.resize(count(1));
+			for (T& item : items) get(item);
+		}
 	}
 	template<class T> auto get(T& value) -> decltype(value.fields(*this)) {
 		value.fields(*this);
