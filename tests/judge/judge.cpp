@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include "judge.h"
+#include "verdict_summary.h"
 
 #include <cctype>
 #include <filesystem>
@@ -47,6 +48,7 @@ public:
 	using TestEventListenerBase::TestEventListenerBase;
 
 	void testCaseStarting(const Catch::TestCaseInfo& info) override {
+		TestEventListenerBase::testCaseStarting(info);
 		Judge_State& s = state();
 		s.subject.reset();
 		s.test_case = info.name;
@@ -57,6 +59,7 @@ public:
 	}
 
 	void testCaseEnded(const Catch::TestCaseStats& stats) override {
+		TestEventListenerBase::testCaseEnded(stats);
 		Judge_State& s = state();
 		s.subject.reset();
 		if (!s.save_dir.empty() && stats.totals.assertions.failed == 0) std::filesystem::remove(requests_file());
@@ -140,5 +143,7 @@ int main(int argc, char** argv) {
 	}
 	std::cout << s.sandbox->notice() << "\n"
 	          << (s.secret_seed ? "inputs: drawn from the grading seed" : "inputs: the public test cases") << "\n";
-	return session.run();
+	int status = session.run();
+	print_verdict_summary(std::cout);
+	return status;
 }

@@ -30,4 +30,15 @@ RNG case_generator(const std::string& what);
 
 const Sandbox& sandbox();
 
+// The order of a grader's messages. Test cases tag the student functions they pin down, [fn:NAME],
+// and those they rely on, [uses:NAME]; a grader runs a function's own test cases first (the order
+// of its files, tests/CMakeLists.txt). A failing test case that uses a function whose own test
+// cases failed says so before anything else ("fix NAME first"), and unit_tests_failed(NAME) lets a
+// reference-image test choose its hint.
+bool unit_tests_failed(const std::string& function);
+
+// A figure a task shows when it passes (e.g. its tree's SAH cost against the reference's), printed
+// with the one-line-per-test-case summary that ends the judge's output.
+void key_figure(const std::string& what, const std::string& value);
+
 } // namespace judge

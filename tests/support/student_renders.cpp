@@ -25,9 +25,19 @@ void report_images(const std::string& name, const Reference_Check& check) {
 	                {"tests", c.tests}, {"z_critical", c.z_critical}, {"rel_mse", c.rel_mse}});
 }
 
+// The hints of the functions whose own test cases failed, or else the general one.
+std::string chosen_hint(const std::string& hint, const std::vector<Image_Hint>& if_failed) {
+	std::string chosen;
+	for (const Image_Hint& h : if_failed) {
+		if (judge::unit_tests_failed(h.function)) chosen += h.function + " decides " + h.hint + " ";
+	}
+	return chosen.empty() ? hint : chosen;
+}
+
 } // namespace
 
-void check_renders_like_reference(const std::string& name, const std::string& hint) {
+void check_renders_like_reference(const std::string& name, const std::string& hint,
+                                  const std::vector<Image_Hint>& if_failed) {
 	const Graded_Scene& graded = graded_scene(name);
 	Scene scene = load_graded(graded);
 	Render_Settings settings = scene.settings;
@@ -39,7 +49,8 @@ void check_renders_like_reference(const std::string& name, const std::string& hi
 	Reference_Check check = compare_with_reference(graded, film, settings);
 	if (report::enabled()) report_images(name, check);
 	INFO("scenes/graded/" << name << ".json: " << check.comparison.message);
-	INFO(hint);
+	INFO(chosen_hint(hint, if_failed) << " Render it: ./lab render-student scenes/graded/" << name << ".json"
+	                                  << (graded.view == View::eye_light ? " --view eye" : ""));
 	CHECK(check.non_finite == 0);
 	CHECK(check.comparison.pass);
 }

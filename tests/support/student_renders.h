@@ -2,10 +2,20 @@
 // Reference-image tests of a grader: the student's code renders a graded scene (in the subject,
 // tests/judge/), and the judge compares the film with the stored reference (graded_images.h).
 #include <string>
+#include <vector>
+
+// What to look at when a function's own test cases failed (judge::unit_tests_failed): a render then
+// fails because of that function, and the hint says where in the handout it is explained.
+struct Image_Hint {
+	std::string function; // as in the test cases' [fn:NAME] tags
+	std::string hint;
+};
 
 // The grader's reference-image check as Catch2 checks: renders the graded scene `name` with the task
 // under test, compares it with the stored reference, and on failure shows where the image differs
-// and `hint` (what to look at, in the handout's terms). For the grade report (report_record.h) it also
+// and what to look at: the hints of the functions whose own test cases failed, or else `hint` (in
+// the handout's terms). `render_it` ends the message (how to see the picture). For the grade report (report_record.h) it also
 // writes the render, the reference and a heat map of the z-scores (z_heat_map.h) as PNGs and
 // attaches them to the test case. With a grading seed the render uses a seed drawn from it.
-void check_renders_like_reference(const std::string& name, const std::string& hint);
+void check_renders_like_reference(const std::string& name, const std::string& hint,
+                                  const std::vector<Image_Hint>& if_failed = {});

@@ -85,7 +85,7 @@ float fov(RNG& rng, float public_fov) {
 
 } // namespace
 
-TEST_CASE("generate_ray: the centre of the film looks straight ahead, down -z in camera space") {
+TEST_CASE("generate_ray: the centre of the film looks straight ahead, down -z in camera space", "[fn:generate_ray]") {
 	std::vector<Generate_Rays::Query> queries;
 	for (auto [fov, aspect] : fovs_and_aspects()) queries.push_back({camera_at_origin(fov, aspect), Vec2{0.5f, 0.5f}});
 	std::vector<Ray> rays = student_rays(queries);
@@ -102,7 +102,7 @@ TEST_CASE("generate_ray: the centre of the film looks straight ahead, down -z in
 	}
 }
 
-TEST_CASE("generate_ray: corners and edges of the film follow v_fov (degrees) and aspect_ratio") {
+TEST_CASE("generate_ray: corners and edges of the film follow v_fov (degrees) and aspect_ratio", "[fn:generate_ray]") {
 	std::vector<Generate_Rays::Query> queries;
 	for (auto [fov, aspect] : fovs_and_aspects()) {
 		for (DVec2 uv : film_points()) queries.push_back({camera_at_origin(fov, aspect), Vec2(uv)});
@@ -110,7 +110,7 @@ TEST_CASE("generate_ray: corners and edges of the film follow v_fov (degrees) an
 	check_rays(queries);
 }
 
-TEST_CASE("generate_ray: the film spans exactly v_fov vertically and the aspect ratio horizontally") {
+TEST_CASE("generate_ray: the film spans exactly v_fov vertically and the aspect ratio horizontally", "[fn:generate_ray]") {
 	// A geometric restatement independent of any formula: the angle between the rays through the
 	// top and bottom edge midpoints is v_fov; between left and right it is 2 atan(aspect tan(v_fov/2)).
 	const Vec2 top{0.5f, 0.0f}, bottom{0.5f, 1.0f}, left{0.0f, 0.5f}, right{1.0f, 0.5f};
@@ -139,7 +139,7 @@ TEST_CASE("generate_ray: the film spans exactly v_fov vertically and the aspect 
 	}
 }
 
-TEST_CASE("generate_ray: film (0, 0) is up and to the left as seen by the camera") {
+TEST_CASE("generate_ray: film (0, 0) is up and to the left as seen by the camera", "[fn:generate_ray]") {
 	// A camera turned to look along a diagonal: "up" and "left" are the camera's, not the world's.
 	RNG rng = judge::case_generator("up and left");
 	Vec3 position = place(rng, {1.0f, 2.0f, 3.0f}, 5.0f), target = place(rng, {-2.0f, 0.5f, -1.0f}, 5.0f);
@@ -172,7 +172,7 @@ TEST_CASE("generate_ray: film (0, 0) is up and to the left as seen by the camera
 	}
 }
 
-TEST_CASE("generate_ray: directions are unit length and dist_bounds is [0, inf)") {
+TEST_CASE("generate_ray: directions are unit length and dist_bounds is [0, inf)", "[fn:generate_ray]") {
 	RNG cases = judge::case_generator("unit length");
 	Camera camera = Camera::look_at(place(cases, Vec3{0.0f, 1.0f, 4.0f}, 5.0f), Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f},
 	                                fov(cases, 70.0f), 16.0f / 9.0f);
@@ -192,7 +192,7 @@ TEST_CASE("generate_ray: directions are unit length and dist_bounds is [0, inf)"
 	CHECK(wrong_bounds == 0);
 }
 
-TEST_CASE("generate_ray: camera_to_world moves the origin to the camera and rotates the directions") {
+TEST_CASE("generate_ray: camera_to_world moves the origin to the camera and rotates the directions", "[fn:generate_ray]") {
 	RNG rng = judge::case_generator("camera_to_world");
 	SECTION("a camera made by look_at looks at its target") {
 		Vec3 position = place(rng, {3.0f, -2.0f, 5.0f}, 6.0f), target = place(rng, {0.0f, 1.0f, -1.0f}, 6.0f);
@@ -202,14 +202,16 @@ TEST_CASE("generate_ray: camera_to_world moves the origin to the camera and rota
 			queries.push_back({camera, Vec2(uv)});
 		}
 		std::vector<Ray> rays = student_rays(queries);
-		const Ray& centre = rays[0];
-		DVec3 to_target = glm::normalize(DVec3(target - position));
-		INFO("the centre of the film must look from the camera position " << show(DVec3(position))
-		     << " straight at the target, direction " << show(to_target) << "; got point "
-		     << show(DVec3(centre.point)) << ", direction " << show(DVec3(centre.dir))
-		     << ". Apply camera_to_world to the origin and the direction (handout §1.2)");
-		CHECK(near(DVec3(centre.point), DVec3(position), 1e-5));
-		CHECK(near(DVec3(centre.dir), to_target, DIRECTION_TOLERANCE));
+		{
+			const Ray& centre = rays[0];
+			DVec3 to_target = glm::normalize(DVec3(target - position));
+			INFO("the centre of the film must look from the camera position " << show(DVec3(position))
+			     << " straight at the target, direction " << show(to_target) << "; got point "
+			     << show(DVec3(centre.point)) << ", direction " << show(DVec3(centre.dir))
+			     << ". Apply camera_to_world to the origin and the direction (handout §1.2)");
+			CHECK(near(DVec3(centre.point), DVec3(position), 1e-5));
+			CHECK(near(DVec3(centre.dir), to_target, DIRECTION_TOLERANCE));
+		}
 		for (size_t i = 1; i < queries.size(); i++) {
 			if (!check_ray(queries[i], rays[i])) return;
 		}

@@ -7,9 +7,11 @@
 #include <catch2/catch.hpp>
 
 TEST_CASE("the graded scene eye_bunny renders like its reference image",
-          "[task1][image][statistical]") {
-	check_renders_like_reference("eye_bunny",
-	                             "If the picture is shifted, flipped or stretched, look at generate_ray (handout §1.2); if"
-	                             " edges are too sharp or too soft, at the random point in the pixel of trace_pixel "
-	                             "(handout §1.3). Render it: ./lab render-student scenes/graded/eye_bunny.json --view eye");
+          "[task1][image][statistical][uses:generate_ray][uses:trace_pixel]") {
+	check_renders_like_reference(
+		"eye_bunny",
+		"If the picture is shifted, flipped or stretched, look at generate_ray (handout §1.2); if edges are too sharp or "
+		"too soft, at the random point in the pixel of trace_pixel (handout §1.3).",
+		{{"generate_ray", "the camera rays: a shifted, flipped or stretched picture comes from them (handout §1.2)."},
+		 {"trace_pixel", "where in the pixel the samples fall: edges too sharp or too soft (handout §1.3)."}});
 }

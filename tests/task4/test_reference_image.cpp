@@ -7,9 +7,14 @@
 #include <catch2/catch.hpp>
 
 TEST_CASE("the graded scene cornell_diffuse renders like its reference image",
-          "[task4][image][statistical]") {
-	check_renders_like_reference("cornell_diffuse",
-	                             "Too dark or too bright: check the estimator f * |cos| / pdf (handout §4.2) and that the "
-	                             "Lambertian BSDF, its sampling and its pdf agree (handout §4.1). Render it: ./lab render-"
-	                             "student scenes/graded/cornell_diffuse.json");
+          "[task4][image][statistical][uses:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
+	check_renders_like_reference(
+		"cornell_diffuse",
+		"Too dark or too bright: check the estimator f * |cos| / pdf (handout §4.2) and that the Lambertian BSDF, its "
+		"sampling and its pdf agree (handout §4.1).",
+		{{"Lambertian::evaluate", "the BSDF's value albedo / pi (handout §4.1)."},
+		 {"Lambertian::pdf", "the density |cos theta| / pi the estimator divides by (handout §4.1)."},
+		 {"Lambertian::scatter", "the cosine-weighted directions (handout §4.1)."},
+		 {"shade", "the estimator: emission plus f |cos| / pdf times the next ray's radiance, and where the next ray "
+		           "starts (dist_bounds, handout §4.2)."}});
 }

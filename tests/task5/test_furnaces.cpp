@@ -33,7 +33,7 @@ void require_finite(const Film& film) {
 
 } // namespace
 
-TEST_CASE("Glass furnace: a clear glass sphere in a uniform environment L = 1 renders 1 (energy is conserved)") {
+TEST_CASE("Glass furnace: a clear glass sphere in a uniform environment L = 1 renders 1 (energy is conserved)", "[uses:Glass::scatter]") {
 	// Every path through clear glass ends in the environment with weight 1, unless the depth cap
 	// stops it inside. Inside a sphere the internal angle equals the refracted one, so there is no
 	// total internal reflection and a path is still inside after D scattering events with
@@ -68,7 +68,7 @@ TEST_CASE("Glass furnace: a clear glass sphere in a uniform environment L = 1 re
 }
 
 TEST_CASE("Glass, seen from inside: the lab does not scale radiance by eta^2, so the view from inside a glass "
-          "sphere under L = 1 is 1, not 2.25") {
+          "sphere under L = 1 is 1, not 2.25", "[uses:Glass::scatter]") {
 	// material.h: transmitted radiance is not multiplied by eta^2. A renderer that does (radiance
 	// "compresses" into the denser medium) would show 1.5^2 = 2.25 here, while the furnace above
 	// cannot tell (the factors cancel on the way in and out). The camera is 3 units from the centre
@@ -96,7 +96,7 @@ TEST_CASE("Glass, seen from inside: the lab does not scale radiance by eta^2, so
 	}
 }
 
-TEST_CASE("Mirror furnace: a mirror sphere of reflectance R in a uniform environment L = 1 renders R") {
+TEST_CASE("Mirror furnace: a mirror sphere of reflectance R in a uniform environment L = 1 renders R", "[uses:Mirror::scatter]") {
 	// A convex mirror reflects every camera ray once, straight into the environment: R * L.
 	std::optional<RNG> secret = secret_inputs("mirror furnace");
 	Spectrum reflectance{0.9f, 0.5f, 0.2f};

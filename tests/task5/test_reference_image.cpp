@@ -8,9 +8,14 @@
 #include <catch2/catch.hpp>
 
 TEST_CASE("the graded scene glass_balls renders like its reference image",
-          "[task5][image][statistical]") {
-	check_renders_like_reference("glass_balls",
-	                             "The glass ball must both reflect (with probability F) and refract (handout §5.2, §5.3), "
-	                             "the mirror reflect about the normal (handout §5.1). Render it: ./lab render-student "
-	                             "scenes/graded/glass_balls.json");
+          "[task5][image][statistical][uses:Mirror::scatter][uses:Glass::scatter]") {
+	check_renders_like_reference(
+		"glass_balls",
+		"The glass ball must both reflect (with probability F) and refract (handout §5.2, §5.3), the mirror reflect about "
+		"the normal (handout §5.1).",
+		{{"reflect", "the mirror's and the glass's reflections (handout §5.1)."},
+		 {"refract", "the glass's refractions, Snell's law from both sides (handout §5.2)."},
+		 {"fresnel", "how often the glass reflects (handout §5.3)."},
+		 {"Mirror::scatter", "the mirror ball (handout §5.4)."},
+		 {"Glass::scatter", "the glass ball: reflect with probability F, else refract (handout §5.4)."}});
 }

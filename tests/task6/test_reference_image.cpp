@@ -7,9 +7,10 @@
 #include <catch2/catch.hpp>
 
 TEST_CASE("the graded scene cornell_small_light renders like its reference image",
-          "[task6][image][statistical]") {
-	check_renders_like_reference("cornell_small_light",
-	                             "The mixture's pdf must be 1/2 p_bsdf + 1/2 p_lights for EVERY direction, whichever "
-	                             "strategy drew it (handout §6.2). Render it: ./lab render-student "
-	                             "scenes/graded/cornell_small_light.json");
+          "[task6][image][statistical][uses:sample_incoming]") {
+	check_renders_like_reference(
+		"cornell_small_light",
+		"The mixture's pdf must be 1/2 p_bsdf + 1/2 p_lights for EVERY direction, whichever strategy drew it (handout "
+		"§6.2).",
+		{{"sample_incoming", "the mixture's directions and their density (handout §6.2, §6.3)."}});
 }

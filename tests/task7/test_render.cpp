@@ -55,7 +55,7 @@ void check_channels(const Film& film, const Spectrum& expected, Pixel_Coverage::
 }
 } // namespace
 
-TEST_CASE("a diffuse sphere under a constant Env_Map renders albedo * L", "[task7][render][statistical]") {
+TEST_CASE("a diffuse sphere under a constant Env_Map renders albedo * L", "[task7][render][statistical][uses:Env_Map::sample][uses:Env_Map::pdf][uses:Env_Map::evaluate][uses:Uniform::sample]") {
 	// The image is constant, so evaluate returns L in every direction, and with light sampling
 	// (task 6) the path tracer also draws directions with Env_Map::sample and weighs them with pdf.
 	Colours c = colours("render under Env_Map");
@@ -72,7 +72,7 @@ TEST_CASE("a diffuse sphere under a constant Env_Map renders albedo * L", "[task
 	               "(handout §7.3, §7.4)");
 }
 
-TEST_CASE("a diffuse sphere under Env_Constant renders albedo * L", "[task7][render][statistical]") {
+TEST_CASE("a diffuse sphere under Env_Constant renders albedo * L", "[task7][render][statistical][uses:Env_Map::sample][uses:Env_Map::pdf][uses:Env_Map::evaluate][uses:Uniform::sample]") {
 	// Env_Constant samples with Samplers::Sphere::Uniform (used when the path tracer samples lights).
 	Colours c = colours("render under Env_Constant");
 	Film film = render_sphere(Env_Constant{c.sky}, c);
