@@ -68,3 +68,25 @@ void check_mean(const Film& film, int channel, double expected, double z_critica
 	INFO(check.message);
 	CHECK(check.pass);
 }
+
+bool check_mean_rgb(const Film& film, glm::dvec3 expected, double z_critical, const std::string& what,
+                    const std::function<bool(uint32_t, uint32_t)>& select, const std::string& if_too_dark) {
+	std::string failures;
+	bool all_too_dark = true, channels_alike = true;
+	double first_measured = film_mean(film, 0, select).mean;
+	for (int c = 0; c < 3; c++) {
+		Film_Mean m = film_mean(film, c, select);
+		channels_alike = channels_alike && m.mean == first_measured && expected[c] == expected[0];
+		Mean_Check check = compare_mean(film, c, expected[c], z_critical, std::string(channel_name(c)) + " channel", select);
+		if (check.pass) continue;
+		all_too_dark = all_too_dark && m.mean < expected[c];
+		failures += (failures.empty() ? "" : "; ") + check.message;
+	}
+	bool pass = failures.empty();
+	if (!pass && channels_alike) {
+		failures = compare_mean(film, 0, expected[0], z_critical, "every channel", select).message;
+	}
+	INFO(what << ": " << failures << (all_too_dark && !if_too_dark.empty() ? ". " + if_too_dark : ""));
+	CHECK(pass);
+	return pass;
+}

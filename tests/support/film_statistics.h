@@ -45,3 +45,10 @@ const char* channel_name(int channel);
 // compare_mean as a Catch2 check: the message says what was measured, expected and allowed.
 void check_mean(const Film& film, int channel, double expected, double z_critical, const std::string& what,
                 const std::function<bool(uint32_t, uint32_t)>& select = [](uint32_t, uint32_t) { return true; });
+
+// The three channels checked at once (three z-tests, one Catch2 check): one message naming the
+// channels that fail (once, when all three measure the same), followed by `if_too_dark` when every
+// failing channel is darker than expected. Returns whether all three passed.
+bool check_mean_rgb(const Film& film, glm::dvec3 expected, double z_critical, const std::string& what,
+                    const std::function<bool(uint32_t, uint32_t)>& select = [](uint32_t, uint32_t) { return true; },
+                    const std::string& if_too_dark = "");
