@@ -26,20 +26,34 @@ std::string now() {
 
 int main(int argc, char** argv) {
 	std::vector<std::string> args(argv + 1, argv + argc);
-	std::string rubric_file;
+	std::string rubric_file, default_rubric_file;
 	double execution_time = 0.0;
 	for (size_t i = 1; i + 1 < args.size(); i += 2) {
 		if (args[i] == "--rubric") rubric_file = args[i + 1];
 		else if (args[i] == "--execution-time") execution_time = std::stod(args[i + 1]);
+		else if (args[i] == "--write-default-rubric") default_rubric_file = args[i + 1];
 		else args.clear();
 	}
 	if (args.empty() || args.size() % 2 == 0) {
-		std::cerr << "usage: grade_report DIR [--rubric FILE [--execution-time SECONDS]]\n";
+		std::cerr << "usage: grade_report DIR [--rubric FILE [--execution-time SECONDS]]\n"
+		             "       grade_report STUB_RESULTS --write-default-rubric FILE   (./lab rubric)\n";
 		return 2;
 	}
 	std::filesystem::path dir = args[0];
 	std::vector<Task_Result> tasks;
 	for (const Task_Info& task : lab_tasks()) tasks.push_back(read_task_result(dir, task));
+	if (!default_rubric_file.empty()) {
+		try {
+			std::ofstream out(default_rubric_file);
+			write_default_rubric(out, tasks);
+			if (!out) throw Rubric_Error("cannot write " + default_rubric_file);
+		} catch (const Rubric_Error& problem) {
+			std::cerr << "grade_report: " << problem.what() << "\n";
+			return 1;
+		}
+		std::cout << default_rubric_file << "\n";
+		return 0;
+	}
 	std::vector<Task_Score> scores;
 	if (!rubric_file.empty()) {
 		try {

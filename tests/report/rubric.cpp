@@ -109,3 +109,23 @@ Task_Score score(const Rubric& rubric, const Task_Result& result) {
 	}
 	return score;
 }
+
+void write_default_rubric(std::ostream& out, const std::vector<Task_Result>& stubs) {
+	const std::map<int, double> POINTS{{1, 5}, {2, 15}, {3, 18}, {4, 15}, {5, 15}, {6, 8}, {7, 14}};
+	nlohmann::ordered_json tasks = nlohmann::ordered_json::array();
+	for (const Task_Result& result : stubs) {
+		if (result.expected.empty()) throw Rubric_Error("task " + std::to_string(result.task.number) + " has no test cases: " + result.why);
+		nlohmann::ordered_json cases = nlohmann::ordered_json::array();
+		for (const std::string& name : result.expected) {
+			auto ran = std::find_if(result.test_cases.begin(), result.test_cases.end(),
+			                        [&](const Test_Case& c) { return c.name == name; });
+			bool stub_passes = ran != result.test_cases.end() && ran->passed;
+			cases.push_back({{"name", name}, {"weight", stub_passes ? 0 : 1}});
+		}
+		tasks.push_back({{"task", result.task.number}, {"points", POINTS.at(result.task.number)}, {"test_cases", cases}});
+	}
+	nlohmann::ordered_json rubric{{"about", "Points per task and their split over its test cases (tests/report/rubric.h). "
+	                                        "Weight 0: a test case the shipped stubs pass, which earns nothing by itself."},
+	                              {"tasks", tasks}};
+	out << rubric.dump(1, '\t') << "\n";
+}

@@ -53,6 +53,11 @@ struct Task_Score {
 	std::vector<Scored_Test_Case> test_cases;
 };
 
+// A rubric for the judges as they are: the default points per task (the course's split), and every
+// test case of every task weighted 1, or 0 where the shipped stubs pass it (`stubs`: the seven tasks'
+// results of grading the stubs). Instructors then edit weights and visibilities by hand.
+void write_default_rubric(std::ostream& out, const std::vector<Task_Result>& stubs);
+
 // A task's points from its result. Throws Rubric_Error if the judge has a test case the rubric does
 // not know or the rubric names one the judge does not have (a task that did not build has none).
 Task_Score score(const Rubric& rubric, const Task_Result& result);

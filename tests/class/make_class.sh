@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# A synthetic class for the class-grading tests (label class, parallel, slurm):
+#   make_class.sh REPOSITORY_ROOT OUT
+# writes OUT/submissions/<id>/ (at least 20 submissions) and OUT/expected.csv, what each must score:
+# per task "full" (the task's points), "zero", or "less" (a realistic mistake: fewer than full).
+# Submissions: all reference, all stubs, files that are not task files, each task alone, mixtures,
+# realistic mistakes (tests/mutants/) and hostile files (tests/security/hostile/), the other tasks
+# being the reference.
+set -euo pipefail
+root=$1
+out=$2
+files=(task1_camera.cpp task2_shapes.cpp task3_bvh.cpp task4_path.cpp task5_materials.cpp
+	task6_direct_lighting.cpp task7_env_light.cpp)
+rm -rf "$out"
+mkdir -p "$out/submissions"
+echo "id,task1,task2,task3,task4,task5,task6,task7" >"$out/expected.csv"
+
+# submission ID EXPECTATIONS(7, comma-separated) [TASK=FILE ...]: tasks given a FILE use it, tasks
+# expected "zero" without one are left out (the stub), every other task is the reference.
+submission() {
+	local id=$1 expected=$2
+	shift 2
+	local dir=$out/submissions/$id
+	mkdir -p "$dir"
+	IFS=, read -r -a expect <<<"$expected"
+	for n in 1 2 3 4 5 6 7; do
+		[ "${expect[$((n - 1))]}" = zero ] || cp "$root/reference/${files[$((n - 1))]}" "$dir/"
+	done
+	for given in "$@"; do
+		local n=${given%%=*} file=${given#*=}
+		cp "$file" "$dir/${files[$((n - 1))]}"
+	done
+	echo "$id,$expected" >>"$out/expected.csv"
+}
+
+submission all_reference full,full,full,full,full,full,full
+submission all_stubs zero,zero,zero,zero,zero,zero,zero
+submission stubs_and_notes zero,zero,zero,zero,zero,zero,zero
+echo "my notes" >"$out/submissions/stubs_and_notes/notes.txt"
+mkdir -p "$out/submissions/stubs_and_notes/build"
+echo "not a task file" >"$out/submissions/stubs_and_notes/build/task1_camera.cpp"
+for n in 1 2 3 4 5 6 7; do
+	expect=zero,zero,zero,zero,zero,zero,zero
+	expect=$(echo "$expect" | awk -F, -v n="$n" 'BEGIN { OFS = "," } { $n = "full"; print }')
+	submission "only_task$n" "$expect"
+done
+submission part_one full,full,full,zero,zero,zero,zero
+submission part_two zero,zero,zero,full,full,full,full
+submission odd_tasks full,zero,full,zero,full,zero,full
+
+mutant() { # mutant TASK NAME
+	local expect=full,full,full,full,full,full,full
+	expect=$(echo "$expect" | awk -F, -v n="$1" 'BEGIN { OFS = "," } { $n = "less"; print }')
+	submission "mistake_task$1_$2" "$expect" "$1=$root/tests/mutants/task$1/$2.cpp"
+}
+mutant 1 upside_down
+mutant 1 no_jitter
+mutant 4 no_offset
+mutant 5 eta_inverted
+mutant 6 mixture_without_halves
+mutant 7 pdf_without_sin_theta
+
+hostile() { # hostile TASK FILE
+	local expect=full,full,full,full,full,full,full
+	expect=$(echo "$expect" | awk -F, -v n="$1" 'BEGIN { OFS = "," } { $n = "zero"; print }')
+	submission "hostile_$2" "$expect" "$1=$root/tests/security/hostile/$2.cpp"
+}
+hostile 1 task1_exit_in_static_initializer
+hostile 1 task1_fork_survivor
+hostile 3 task3_include_reference
+hostile 7 task7_forged_records

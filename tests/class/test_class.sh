@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# The class on one machine (label class): the synthetic class (make_class.sh) graded by
+# ./lab grade-class with two workers must score as expected (check_gradebook.sh); a rerun resumes
+# (nothing is graded again, the gradebook is the same); a submission graded again with --regrade
+# gets the same scores and messages. Leaves the gradebook in OUT/gradebook.csv for the GNU parallel
+# and Slurm tests (ctest fixture "class_graded").
+#   test_class.sh REPOSITORY_ROOT KIT OUT
+set -euo pipefail
+root=$1 kit=$2 out=$3
+here=$(cd "$(dirname "$0")" && pwd)
+fail() { echo "class test: $*" >&2; exit 1; }
+rm -rf "$out"
+mkdir -p "$out"
+bash "$here/make_class.sh" "$root" "$out/class"
+export KIT=$kit
+
+start=$SECONDS
+"$root/tools/grade-class" "$out/class/submissions" --out "$out/graded" --jobs 2 >"$out/grade-class.log" 2>&1 ||
+	{ tail -20 "$out/grade-class.log" >&2; fail "grade-class failed"; }
+seconds=$((SECONDS - start))
+count=$(find "$out/class/submissions" -mindepth 1 -maxdepth 1 -type d | wc -l)
+echo "class test: $count submissions graded in $seconds s with 2 workers ($(awk -v s="$seconds" -v n="$count" 'BEGIN { printf "%.1f", 2 * s / n }') s of a worker each)"
+bash "$here/check_gradebook.sh" "$root/grading/rubric.json" "$out/class/expected.csv" "$out/graded/gradebook.csv"
+cp "$out/graded/gradebook.csv" "$out/gradebook.csv"
+
+# A rerun resumes: nothing to grade, the same gradebook.
+"$root/tools/grade-class" "$out/class/submissions" --out "$out/graded" --jobs 2 >"$out/rerun.log" 2>&1 ||
+	fail "the rerun of grade-class failed"
+cmp -s "$out/gradebook.csv" "$out/graded/gradebook.csv" || fail "the rerun changed the gradebook"
+[ -z "$(find "$out/graded/submissions" -newer "$out/gradebook.csv" -name results.json)" ] ||
+	fail "the rerun graded finished submissions again"
+
+# The same submission and seed give the same scores and messages: regrade one and compare.
+id=mistake_task1_upside_down
+strip_time() { grep -v '"execution_time"' "$1"; }
+strip_time "$out/graded/submissions/$id/results.json" >"$out/first.json"
+"$root/tools/grade-submission" "$out/class/submissions/$id" --out "$out/graded/submissions/$id" >/dev/null 2>&1 ||
+	fail "grading $id again failed"
+strip_time "$out/graded/submissions/$id/results.json" >"$out/second.json"
+cmp -s "$out/first.json" "$out/second.json" || { diff "$out/first.json" "$out/second.json" | head -20 >&2; fail "$id: a second grading differs"; }
+echo "class test: a rerun resumes, and grading $id again gives the same results.json"
