@@ -188,7 +188,8 @@ struct BVH_Triangles {
 };
 
 // BVH<Instance>(the scene's objects, max_leaf_size), then bvh.hit(ray) for each ray. The objects'
-// meshes are built by Tri_Mesh, with the task-3 BVH too.
+// meshes are built by Tri_Mesh, with the task-3 BVH too. instance_tests: the Instance::hit calls of
+// those bvh.hit calls, as the framework counted them.
 struct BVH_Instances {
 	static constexpr Kind KIND = Kind::bvh_instances;
 	Scene scene; // only its objects are used
@@ -199,7 +200,8 @@ struct BVH_Instances {
 		Tree tree;
 		std::vector<uint32_t> order; // Instance::index of bvh.primitives[i]
 		std::vector<Trace> hits;
-		template<class A> void fields(A& a) { a(tree, order, hits); }
+		uint64_t instance_tests = 0;
+		template<class A> void fields(A& a) { a(tree, order, hits, instance_tests); }
 	};
 };
 

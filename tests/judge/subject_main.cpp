@@ -93,7 +93,9 @@ BVH_Instances::Answer answer(const BVH_Instances& request) {
 	BVH_Instances::Answer result;
 	result.tree = tree_of(bvh);
 	for (const Instance& object : bvh.primitives) result.order.push_back(object.index);
+	uint64_t tests_before = ray_counters().instance_tests;
 	for (const Ray& ray : request.rays) result.hits.push_back(bvh.hit(ray));
+	result.instance_tests = ray_counters().instance_tests - tests_before;
 	return result;
 }
 

@@ -76,13 +76,19 @@ public:
 	bool assertionEnded(const Catch::AssertionStats& stats) override {
 		Summary_State& s = summary();
 		if (stats.assertionResult.isOk() || !s.first_message.empty()) return false;
-		// The first message that explains (not the "fix first" note, not a CAPTURE of a variable).
+		// The message that explains: the first that cites a handout section (§), else the first (never
+		// the "fix first" note, never a CAPTURE of a variable).
+		std::string first;
 		for (const Catch::MessageInfo& info : stats.infoMessages) {
 			if (info.message.rfind("Fix ", 0) == 0 && !s.prerequisites_failed.empty()) continue;
 			if (info.macroName == "CAPTURE") continue;
-			s.first_message = info.message;
-			break;
+			if (first.empty()) first = info.message;
+			if (info.message.find("§") != std::string::npos) {
+				s.first_message = info.message;
+				break;
+			}
 		}
+		if (s.first_message.empty()) s.first_message = first;
 		if (s.first_message.empty()) s.first_message = stats.assertionResult.getMessage();
 		if (s.first_message.empty()) s.first_message = stats.assertionResult.getExpandedExpression();
 		return false;

@@ -1,33 +1,46 @@
 // Task 3, handout §3.4: the tree is a good SAH tree (§3.2) and the traversal is front to back
-// (§3.3), measured against an independent binned-SAH builder and an ideal traversal.
-#include "bvh_oracle.h"
+// (§3.3), measured against the reference's binned-SAH tree (built here, in the judge) and an ideal
+// traversal (tree_check.h: the primitives of the leaves a ray's segment up to its closest hit
+// overlaps). The student's tree and hits come from the subject.
 #include "bvh_test_scenes.h"
-#include "obj_loader.h"
+#include "judge.h"
+#include "tree_check.h"
 
 #include <catch2/catch.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <sstream>
+
+using protocol::BVH_Instances;
+using protocol::BVH_Triangles;
+
 namespace {
 
-// Allowed ratios to the oracle (handout §3.4).
+// Allowed ratios to the reference (handout §3.4).
 constexpr double MAX_SAH_RATIO = 1.2;
 constexpr double MAX_TESTS_RATIO = 1.5;
 
-template<typename Primitive> void require_valid(const BVH<Primitive>& bvh, size_t max_leaf_size) {
-	std::string problem = oracle::check_structure(bvh, max_leaf_size);
+// The tree must keep the contract before its quality means anything.
+bool valid(const protocol::Tree& tree, const std::vector<BBox>& boxes, size_t max_leaf_size) {
+	std::string problem = task3::structure_problem(tree, boxes, max_leaf_size);
 	INFO("BVH::build: " << problem << " (handout §3.2; the quality of the tree is measured only once its "
 	                                  "structure is right)");
-	REQUIRE(problem.empty());
+	CHECK(problem.empty());
+	return problem.empty();
 }
 
-void check_sah_cost(const std::string& scene, const std::vector<Triangle>& triangles) {
+bool check_sah_cost(const std::string& scene, const std::vector<Triangle>& triangles) {
 	for (size_t max_leaf_size : {1, 4}) {
-		BVH<Triangle> bvh(std::vector<Triangle>(triangles), max_leaf_size);
-		require_valid(bvh, max_leaf_size);
-		double cost = oracle::sah_cost(oracle::tree_of(bvh), boxes_of(bvh.primitives));
-		std::vector<BBox> boxes = boxes_of(triangles);
-		double best = oracle::sah_cost(oracle::build_binned_sah(boxes, max_leaf_size), boxes);
+		BVH_Triangles::Answer answer = judge::ask(BVH_Triangles{triangles, max_leaf_size, {}});
+		if (answer.primitives.size() != triangles.size()) {
+			FAIL_CHECK("BVH::build must keep every primitive exactly once (handout §3.2)");
+			return false;
+		}
+		if (!valid(answer.tree, boxes_of(answer.primitives), max_leaf_size)) return false;
+		double cost = task3::sah_cost(answer.tree, boxes_of(answer.primitives));
+		BVH<Triangle> reference(std::vector<Triangle>(triangles), max_leaf_size);
+		double best = task3::sah_cost(task3::tree_of(reference), boxes_of(reference.primitives));
 		INFO(scene << " (" << triangles.size() << " triangles), max_leaf_size = " << max_leaf_size
 		           << ": the SAH cost of your tree is " << cost << ", that of a binned-SAH tree " << best
 		           << ", a ratio of " << cost / best << " (at most " << MAX_SAH_RATIO
@@ -36,40 +49,55 @@ void check_sah_cost(const std::string& scene, const std::vector<Triangle>& trian
 		              "and split at the cheapest; splitting at the median primitive is not enough "
 		              "(handout §3.2, §3.4)");
 		CHECK(cost <= MAX_SAH_RATIO * best);
+		if (cost > MAX_SAH_RATIO * best) return false;
+		std::ostringstream ratio;
+		ratio.precision(3);
+		ratio << cost / best;
+		judge::key_figure("SAH cost of your tree / the reference's, " + scene + ", leaves of " +
+		                      std::to_string(max_leaf_size),
+		                  ratio.str());
 	}
+	return true;
 }
 
-// Counts Instance::hit calls (framework-counted) made by `trace_all`.
-template<typename F> uint64_t instance_tests(F&& trace_all) {
-	uint64_t before = ray_counters().instance_tests;
-	trace_all();
-	return ray_counters().instance_tests - before;
-}
+void check_primitive_tests(const std::string& scene, const Scene& objects, const std::vector<Ray>& rays) {
+	const std::vector<Instance>& instances = objects.bvh.primitives; // the decoded order: by index
+	std::vector<Instance> by_index(instances);
+	std::sort(by_index.begin(), by_index.end(), [](const Instance& a, const Instance& b) { return a.index < b.index; });
 
-void check_primitive_tests(const std::string& scene, std::vector<Instance> instances, const std::vector<Ray>& rays) {
-	std::vector<BBox> boxes;
-	for (const Instance& instance : instances) boxes.push_back(instance.bbox());
-	oracle::Tree best_tree = oracle::build_binned_sah(boxes, 1);
+	BVH_Instances::Answer answer = judge::ask(BVH_Instances{objects, 1, rays});
+	std::vector<BBox> your_boxes;
+	for (uint32_t index : answer.order) {
+		if (index >= by_index.size()) {
+			FAIL_CHECK("BVH::build returned an object that was not given to it (handout §3.2)");
+			return;
+		}
+		your_boxes.push_back(by_index[index].bbox());
+	}
+	if (!valid(answer.tree, your_boxes, 1)) return;
 
-	BVH<Instance> bvh(std::vector<Instance>(instances), 1);
-	require_valid(bvh, 1);
-	oracle::Tree your_tree = oracle::tree_of(bvh);
-
-	uint64_t yours = instance_tests([&] {
-		for (const Ray& ray : rays) bvh.hit(ray);
-	});
-	uint64_t ideal_on_yours = instance_tests([&] {
-		for (const Ray& ray : rays)
-			oracle::traverse(your_tree, ray, [&](size_t i, const Ray& r) { return bvh.primitives[i].hit(r); });
-	});
-	uint64_t ideal = instance_tests([&] {
-		for (const Ray& ray : rays)
-			oracle::traverse(best_tree, ray, [&](size_t i, const Ray& r) { return instances[i].hit(r); });
-	});
+	BVH<Instance> reference(std::vector<Instance>(by_index), 1);
+	protocol::Tree best_tree = task3::tree_of(reference);
+	uint64_t ideal_on_yours = 0, ideal = 0, hitting = 0;
+	for (size_t r = 0; r < rays.size(); r++) {
+		Trace hit = reference.hit(rays[r]);
+		float closest = hit.hit ? hit.distance : INF_F;
+		hitting += closest < INF_F;
+		ideal_on_yours += task3::ideal_tests(answer.tree, rays[r], closest);
+		ideal += task3::ideal_tests(best_tree, rays[r], closest);
+	}
+	// The count comes from the framework in the subject; a traversal that hits must test at least
+	// the object it hits.
+	uint64_t yours = answer.instance_tests;
+	{
+		INFO("BVH::hit reported " << yours << " object tests for " << hitting << " rays that hit an object: every "
+		     "hit needs a test of the object hit (the count is the framework's; leave it alone)");
+		CHECK(yours >= hitting);
+	}
 	double per_ray = double(yours) / rays.size(), ideal_per_ray = double(ideal) / rays.size();
 	double traversal_ratio = double(yours) / std::max<double>(1.0, double(ideal_on_yours));
 	double tree_ratio = double(ideal_on_yours) / std::max<double>(1.0, double(ideal));
-	INFO(scene << " (" << instances.size() << " objects, " << rays.size() << " rays): your BVH::hit tests "
+	INFO(scene << " (" << by_index.size() << " objects, " << rays.size() << " rays): your BVH::hit tests "
 	           << per_ray << " objects per ray; an ideal front-to-back traversal of a binned-SAH tree tests "
 	           << ideal_per_ray << ", a ratio of " << per_ray / ideal_per_ray << " (at most " << MAX_TESTS_RATIO
 	           << " allowed).\n"
@@ -78,48 +106,57 @@ void check_primitive_tests(const std::string& scene, std::vector<Instance> insta
 	              "skip a child whose box starts beyond the closest hit so far, handout §3.3) and your tree for "
 	           << tree_ratio << " (ideal traversals of your tree and of a binned-SAH tree, handout §3.2).");
 	CHECK(double(yours) <= MAX_TESTS_RATIO * double(ideal));
+	std::ostringstream ratio;
+	ratio.precision(3);
+	ratio << per_ray / ideal_per_ray;
+	judge::key_figure("objects tested per ray / an ideal traversal of the reference's tree, " + scene, ratio.str());
 }
 
-// Objects for the traversal test: one-triangle meshes and small spheres in a cube, placed at random.
-std::vector<Instance> object_cloud(RNG& rng, size_t count) {
-	std::vector<Instance> instances = triangle_instances(random_soup(rng, count / 2, 0.15f));
-	while (instances.size() < count) {
+// A scene of objects for the traversal test: one-triangle meshes and small spheres in a cube, placed
+// at random (committed, so that its objects are in its top-level BVH).
+Scene object_cloud(RNG& rng, size_t count) {
+	Scene scene;
+	scene.materials.push_back(Material{});
+	for (const Triangle& t : random_soup(rng, count / 2, 0.15f)) {
+		scene.objects.emplace_back(Tri_Mesh({t}, 1), Mat4{1.0f}, 0u, uint32_t(scene.objects.size()));
+	}
+	while (scene.objects.size() < count) {
 		Vec3 centre = 2.0f * Vec3{rng.unit(), rng.unit(), rng.unit()} - 1.0f;
 		Sphere sphere;
 		sphere.radius = 0.03f + 0.06f * rng.unit();
-		instances.emplace_back(sphere, glm::translate(Mat4{1.0f}, centre), 0u, uint32_t(instances.size()));
+		scene.objects.emplace_back(sphere, glm::translate(Mat4{1.0f}, centre), 0u, uint32_t(scene.objects.size()));
 	}
-	return instances;
+	scene.commit();
+	return scene;
 }
 
-std::vector<Triangle> load_mesh(const std::string& path) {
-	INFO("grader self-check: the lab's meshes must load (run the grader from the repository root)");
-	std::vector<Triangle> triangles;
-	REQUIRE_NOTHROW(triangles = load_obj(path));
-	return triangles;
+Scene triangle_objects(const std::vector<Triangle>& triangles) {
+	Scene scene;
+	scene.materials.push_back(Material{});
+	for (size_t i = 0; i < triangles.size(); i++) scene.objects.emplace_back(Tri_Mesh({triangles[i]}, 1), Mat4{1.0f}, 0u, uint32_t(i));
+	scene.commit();
+	return scene;
 }
 
 } // namespace
 
-TEST_CASE("BVH::build: SAH cost within 1.2x of a binned-SAH tree", "[task3][bvh][sah]") {
-	RNG rng(321);
-	check_sah_cost("clustered triangles with a few large ones", clustered_soup(rng));
-	check_sah_cost("a random triangle soup", random_soup(rng, 4000, 0.05f));
-	check_sah_cost("the bunny mesh", load_mesh("scenes/meshes/bunny_npm_lowres.obj"));
-	check_sah_cost("the dragon mesh", load_mesh("scenes/meshes/dragon_vrip_res4.obj"));
+TEST_CASE("BVH::build: SAH cost within 1.2x of a binned-SAH tree", "[task3][bvh][sah][fn:BVH::build]") {
+	RNG rng(scene_seed("SAH cost", 321));
+	check_sah_cost("clustered triangles with a few large ones", clustered_soup(rng)) &&
+		check_sah_cost("a random triangle soup", random_soup(rng, 4000, 0.05f)) &&
+		check_sah_cost("the bunny mesh", load_placed_mesh("scenes/meshes/bunny_npm_lowres.obj", "SAH bunny")) &&
+		check_sah_cost("the dragon mesh", load_placed_mesh("scenes/meshes/dragon_vrip_res4.obj", "SAH dragon"));
 }
 
 TEST_CASE("BVH::hit: objects tested per ray within 1.5x of an ideal front-to-back traversal",
-          "[task3][bvh][traversal]") {
-	RNG rng(322);
-	std::vector<Instance> cloud = object_cloud(rng, 4000);
-	BBox box;
-	for (const Instance& instance : cloud) box.enclose(instance.bbox());
+          "[task3][bvh][traversal][fn:BVH::hit][uses:BBox::hit][uses:BVH::build]") {
+	RNG rng(scene_seed("traversal", 322));
+	Scene cloud = object_cloud(rng, 4000);
 	std::vector<Triangle> vertices_for_rays = random_soup(rng, 100, 0.06f);
 	check_primitive_tests("a cloud of small triangles and spheres", cloud,
-	                      random_rays(rng, box, vertices_for_rays, 20000));
+	                      random_rays(rng, cloud.bvh.bbox(), vertices_for_rays, 20000));
 
-	std::vector<Triangle> bunny = load_mesh("scenes/meshes/bunny_npm_lowres.obj");
-	check_primitive_tests("the bunny, one object per triangle", triangle_instances(bunny),
+	std::vector<Triangle> bunny = load_placed_mesh("scenes/meshes/bunny_npm_lowres.obj", "traversal bunny");
+	check_primitive_tests("the bunny, one object per triangle", triangle_objects(bunny),
 	                      random_rays(rng, bounds_of(bunny), bunny, 20000));
 }

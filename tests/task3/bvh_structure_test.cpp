@@ -1,12 +1,16 @@
 // Task 3, handout §3.2: the tree BVH::build makes satisfies the layout contract of bvh.h, also on
-// degenerate inputs (no primitives, one, identical ones, a flat mesh).
-#include "bvh_oracle.h"
+// degenerate inputs (no primitives, one, identical ones, a flat mesh). The student's tree comes
+// from the subject (protocol::BVH_Triangles); the checks run here (tree_check.h).
 #include "bvh_test_scenes.h"
+#include "judge.h"
+#include "tree_check.h"
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cstring>
+
+using protocol::BVH_Triangles;
 
 namespace {
 
@@ -22,68 +26,68 @@ std::vector<std::string> multiset(const std::vector<Triangle>& triangles) {
 	return keys;
 }
 
-void check_structure(const std::vector<Triangle>& triangles, size_t max_leaf_size) {
-	BVH<Triangle> bvh(std::vector<Triangle>(triangles), max_leaf_size);
+// Whether the student's tree over `triangles` keeps the contract; fails the test case if not.
+bool check_structure(const std::vector<Triangle>& triangles, size_t max_leaf_size, const BVH_Triangles::Answer& answer) {
 	INFO(triangles.size() << " triangles, max_leaf_size = " << max_leaf_size);
 	{
 		INFO("BVH::build must keep every primitive exactly once in `primitives`, reordered, not copied or "
 		     "dropped (handout §3.2)");
-		REQUIRE(bvh.primitives.size() == triangles.size());
-		REQUIRE(multiset(bvh.primitives) == multiset(triangles));
+		CHECK(answer.primitives.size() == triangles.size());
+		bool same = multiset(answer.primitives) == multiset(triangles);
+		CHECK(same);
+		if (!same) return false;
 	}
-	std::string problem = oracle::check_structure(bvh, max_leaf_size);
+	std::string problem = task3::structure_problem(answer.tree, boxes_of(answer.primitives), max_leaf_size);
 	INFO("BVH::build: " << problem << " (handout §3.2, layout in bvh.h)");
 	CHECK(problem.empty());
+	return problem.empty();
 }
 
-// The closest hit of one ray by testing every triangle.
-Trace closest_of(const std::vector<Triangle>& triangles, const Ray& ray) {
-	Trace closest;
-	for (const Triangle& t : triangles) closest = Trace::min(closest, t.hit(ray));
-	return closest;
+bool check_structure(const std::vector<Triangle>& triangles, size_t max_leaf_size) {
+	return check_structure(triangles, max_leaf_size, judge::ask(BVH_Triangles{triangles, max_leaf_size, {}}));
 }
 
 } // namespace
 
 TEST_CASE("BVH::build: every primitive once, node ranges nested and tight boxes, small leaves",
-          "[task3][bvh][structure]") {
-	RNG rng(311);
+          "[task3][bvh][structure][fn:BVH::build]") {
+	RNG rng(scene_seed("structure", 311));
 	std::vector<Triangle> soup = random_soup(rng, 3000, 0.08f);
 	std::vector<Triangle> clusters = clustered_soup(rng);
 	for (size_t max_leaf_size : {1, 2, 4, 8}) {
-		check_structure(soup, max_leaf_size);
-		check_structure(clusters, max_leaf_size);
+		if (!check_structure(soup, max_leaf_size) || !check_structure(clusters, max_leaf_size)) return;
 	}
 }
 
-TEST_CASE("BVH with no primitives: hit misses, bbox is empty", "[task3][bvh][degenerate]") {
-	BVH<Triangle> bvh(std::vector<Triangle>{}, 4);
-	INFO("BVH::build over zero primitives (handout §3.2): no crash, and hit() must miss");
-	CHECK(oracle::check_structure(bvh, 4).empty());
-	CHECK(bvh.bbox().empty());
-	CHECK_FALSE(bvh.hit(Ray{Vec3{0.0f}, Vec3{0.0f, 0.0f, 1.0f}}).hit);
-	CHECK_FALSE(bvh.hit(Ray{Vec3{0.0f, 0.0f, -5.0f}, Vec3{0.0f, 0.0f, 1.0f}}).hit);
+TEST_CASE("BVH with no primitives: hit misses, bbox is empty", "[task3][bvh][degenerate][fn:BVH::build][fn:BVH::hit]") {
+	std::vector<Ray> rays{Ray{Vec3{0.0f}, Vec3{0.0f, 0.0f, 1.0f}}, Ray{Vec3{0.0f, 0.0f, -5.0f}, Vec3{0.0f, 0.0f, 1.0f}}};
+	BVH_Triangles::Answer answer = judge::ask(BVH_Triangles{{}, 4, rays});
+	INFO("BVH::build over zero primitives (handout §3.2): no crash, no node with a box, and hit() must miss");
+	CHECK(task3::structure_problem(answer.tree, {}, 4).empty());
+	bool empty_box = answer.tree.nodes.empty() || answer.tree.nodes.at(answer.tree.root_idx).bbox.empty();
+	CHECK(empty_box);
+	for (const Trace& hit : answer.hits) CHECK_FALSE(hit.hit);
 }
 
-TEST_CASE("BVH with one primitive: a leaf root, hits like the triangle itself", "[task3][bvh][degenerate]") {
-	RNG rng(312);
+TEST_CASE("BVH with one primitive: a leaf root, hits like the triangle itself", "[task3][bvh][degenerate][fn:BVH::build][fn:BVH::hit][uses:BBox::hit]") {
+	RNG rng(scene_seed("one triangle", 312));
 	std::vector<Triangle> one{make_triangle(rng, {0.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f})};
-	check_structure(one, 1);
-	BVH<Triangle> bvh(std::vector<Triangle>(one), 1);
-	const Ray rays[] = {Ray{{0.25f, 0.25f, 1.0f}, {0.0f, 0.0f, -1.0f}}, Ray{{0.75f, 0.75f, 1.0f}, {0.0f, 0.0f, -1.0f}},
-	                    Ray{{-1.0f, -1.0f, -1.0f}, {1.2f, 1.1f, 1.0f}}, Ray{{0.25f, 0.25f, 1.0f}, {0.0f, 0.0f, 1.0f}}};
-	for (const Ray& ray : rays) {
-		Trace want = one[0].hit(ray), got = bvh.hit(ray);
-		INFO("ray " << describe(ray) << ": the one-triangle BVH must hit exactly when the triangle does (a flat box: "
-		                                "handout §3.1)");
+	const std::vector<Ray> rays{Ray{{0.25f, 0.25f, 1.0f}, {0.0f, 0.0f, -1.0f}}, Ray{{0.75f, 0.75f, 1.0f}, {0.0f, 0.0f, -1.0f}},
+	                            Ray{{-1.0f, -1.0f, -1.0f}, {1.2f, 1.1f, 1.0f}}, Ray{{0.25f, 0.25f, 1.0f}, {0.0f, 0.0f, 1.0f}}};
+	BVH_Triangles::Answer answer = judge::ask(BVH_Triangles{one, 1, rays});
+	if (!check_structure(one, 1, answer)) return;
+	for (size_t i = 0; i < rays.size(); i++) {
+		Trace want = one[0].hit(rays[i]), got = answer.hits[i];
+		INFO("ray " << describe(rays[i]) << ": the one-triangle BVH must hit exactly when the triangle does (a flat "
+		                                    "box: handout §3.1)");
 		CHECK(got.hit == want.hit);
 		if (got.hit && want.hit) CHECK(got.distance == want.distance);
 	}
 }
 
 TEST_CASE("BVH over identical triangles (all centroids coincide): the build ends, hits are right",
-          "[task3][bvh][degenerate]") {
-	RNG rng(313);
+          "[task3][bvh][degenerate][fn:BVH::build][fn:BVH::hit][uses:BBox::hit]") {
+	RNG rng(scene_seed("identical triangles", 313));
 	std::vector<Triangle> same(500, make_triangle(rng, {0.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.5f}, {0.0f, 1.0f, 1.0f}));
 	// Different triangles around one centroid: coincident centroids, but different boxes.
 	std::vector<Triangle> around;
@@ -93,26 +97,28 @@ TEST_CASE("BVH over identical triangles (all centroids coincide): the build ends
 		Vec3 b = a * Vec3{2.0f * rng.unit() - 1.0f, 2.0f * rng.unit() - 1.0f, 2.0f * rng.unit() - 1.0f};
 		around.push_back(make_triangle(rng, a, -a, b));
 	}
-	INFO("when all centroids coincide no split can separate them: make a leaf or split by count, but never "
-	     "recurse forever (handout §3.2)");
 	for (size_t max_leaf_size : {1, 4}) {
-		check_structure(same, max_leaf_size);
-		check_structure(around, max_leaf_size);
 		for (const auto* triangles : {&same, &around}) {
-			BVH<Triangle> bvh(std::vector<Triangle>(*triangles), max_leaf_size);
 			std::vector<Ray> rays = random_rays(rng, bounds_of(*triangles), *triangles, 400);
-			std::string report = compare_with_brute_force(bvh, rays, brute_force(*triangles, rays));
+			BVH_Triangles::Answer answer = judge::ask(BVH_Triangles{*triangles, max_leaf_size, rays});
+			bool built = false;
+			{
+				INFO("when all centroids coincide no split can separate them: make a leaf or split by count, but "
+				     "never recurse forever (handout §3.2)");
+				built = check_structure(*triangles, max_leaf_size, answer);
+			}
+			if (!built) return;
+			std::string report = Closest_Hits(*triangles).compare(answer.hits, rays);
 			INFO(report);
 			CHECK(report.empty());
 		}
 	}
 }
 
-TEST_CASE("BVH over a flat mesh (every box flat in z): structure and hits", "[task3][bvh][degenerate]") {
-	RNG rng(314);
+TEST_CASE("BVH over a flat mesh (every box flat in z): structure and hits", "[task3][bvh][degenerate][fn:BVH::build][fn:BVH::hit][uses:BBox::hit]") {
+	RNG rng(scene_seed("flat mesh", 314));
 	const int n = 24;
 	std::vector<Triangle> grid = planar_grid(rng, n);
-	for (size_t max_leaf_size : {1, 4}) check_structure(grid, max_leaf_size);
 
 	// Rays at points inside the cells (away from the cell borders, where the triangles' slack for
 	// rounding reaches beyond their boxes), from above and below, straight and oblique; rays
@@ -129,16 +135,16 @@ TEST_CASE("BVH over a flat mesh (every box flat in z): structure and hits", "[ta
 		rays.emplace_back(vertex + Vec3{0.0f, 0.0f, 2.0f}, Vec3{0.0f, 0.0f, -1.0f});
 		rays.emplace_back(vertex, Vec3{1.0f, 0.5f, 0.0f}); // lies in the plane: parallel, so no triangle is hit
 	}
-	std::vector<Brute_Force_Hit> expected = brute_force(grid, rays);
+	Closest_Hits expected(grid);
+	REQUIRE(expected.hitting(rays) > rays.size() / 2); // the grader's own rays must hit the grid, or nothing is tested
 	for (size_t max_leaf_size : {1, 4}) {
-		BVH<Triangle> bvh(std::vector<Triangle>(grid), max_leaf_size);
+		BVH_Triangles::Answer answer = judge::ask(BVH_Triangles{grid, max_leaf_size, rays});
+		if (!check_structure(grid, max_leaf_size, answer)) return;
 		INFO("a planar mesh has flat boxes everywhere: BBox::hit must accept enter == exit (handout §3.1); "
 		     "max_leaf_size = "
 		     << max_leaf_size);
-		std::string report = compare_with_brute_force(bvh, rays, expected);
+		std::string report = expected.compare(answer.hits, rays);
 		INFO(report);
 		CHECK(report.empty());
 	}
-	INFO("grader self-check: a ray straight down through a grid vertex hits the grid");
-	REQUIRE(closest_of(grid, Ray{{1.0f, 1.0f, 2.0f}, {0.0f, 0.0f, -1.0f}}).hit);
 }

@@ -1,5 +1,10 @@
 #include "bvh_test_scenes.h"
 
+#include "judge.h"
+#include "obj_loader.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <cstdio>
 #include <cstring>
 
@@ -45,6 +50,12 @@ std::string describe(const Trace& trace) {
 	std::snprintf(text, sizeof text, "a hit at t = %.9g", double(trace.distance));
 	return text + (", position " + describe(trace.position) + ", normal " + describe(trace.normal));
 }
+
+// The closest hit of one ray by testing every triangle, with every record that ties with it.
+struct Brute_Force_Hit {
+	Trace closest;
+	std::vector<Trace> ties;
+};
 
 // What a student should check for one kind of disagreement.
 std::string diagnosis(const Trace& got, const Brute_Force_Hit& expected) {
@@ -167,31 +178,46 @@ std::vector<BBox> boxes_of(const std::vector<Triangle>& triangles) {
 	return boxes;
 }
 
-std::vector<Brute_Force_Hit> brute_force(const std::vector<Triangle>& triangles, const std::vector<Ray>& rays) {
-	std::vector<Brute_Force_Hit> result(rays.size());
+namespace {
+
+Brute_Force_Hit brute_force(const std::vector<Triangle>& triangles, const Ray& ray) {
+	Brute_Force_Hit result;
 	std::vector<Trace> hits;
-	for (size_t r = 0; r < rays.size(); r++) {
-		hits.clear();
-		Trace& closest = result[r].closest;
-		for (const Triangle& t : triangles) {
-			Trace trace = t.hit(rays[r]);
-			if (!trace.hit) continue;
-			hits.push_back(trace);
-			if (!closest.hit || trace.distance < closest.distance) closest = trace;
-		}
-		for (const Trace& trace : hits)
-			if (trace.distance == closest.distance) result[r].ties.push_back(trace);
+	for (const Triangle& t : triangles) {
+		Trace trace = t.hit(ray);
+		if (!trace.hit) continue;
+		hits.push_back(trace);
+		if (!result.closest.hit || trace.distance < result.closest.distance) result.closest = trace;
 	}
+	for (const Trace& trace : hits)
+		if (trace.distance == result.closest.distance) result.ties.push_back(trace);
 	return result;
 }
 
-std::string compare_with_brute_force(const BVH<Triangle>& bvh, const std::vector<Ray>& rays,
-                                     const std::vector<Brute_Force_Hit>& expected) {
+bool same_record(const Trace& a, const Trace& b) {
+	if (!a.hit || !b.hit) return a.hit == b.hit;
+	return same_bits(a.distance, b.distance) && same_bits(a.position, b.position) && same_bits(a.normal, b.normal);
+}
+
+} // namespace
+
+Closest_Hits::Closest_Hits(const std::vector<Triangle>& triangles)
+	: triangles(triangles), reference(std::vector<Triangle>(triangles), 4) {
+}
+
+size_t Closest_Hits::hitting(const std::vector<Ray>& rays) const {
+	size_t count = 0;
+	for (const Ray& ray : rays) count += reference.hit(ray).hit;
+	return count;
+}
+
+std::string Closest_Hits::compare(const std::vector<Trace>& answers, const std::vector<Ray>& rays) const {
 	size_t wrong = 0;
 	std::string examples;
 	for (size_t r = 0; r < rays.size(); r++) {
-		Trace got = bvh.hit(rays[r]);
-		const Brute_Force_Hit& want = expected[r];
+		const Trace& got = answers[r];
+		if (same_record(got, reference.hit(rays[r]))) continue;
+		Brute_Force_Hit want = brute_force(triangles, rays[r]);
 		bool agree = !got.hit && !want.closest.hit;
 		if (got.hit && want.closest.hit && same_bits(got.distance, want.closest.distance))
 			for (const Trace& tie : want.ties)
@@ -217,4 +243,27 @@ std::string describe(const Ray& ray) {
 	char bounds[64];
 	std::snprintf(bounds, sizeof bounds, "[%.9g, %.9g]", double(ray.dist_bounds.x), double(ray.dist_bounds.y));
 	return "point " + describe(ray.point) + ", dir " + describe(ray.dir) + ", dist_bounds " + bounds;
+}
+
+uint64_t scene_seed(const std::string& test_case, uint64_t public_seed) {
+	if (!judge::secret_seed()) return public_seed;
+	return judge::case_generator("scene " + test_case).integer();
+}
+
+std::vector<Triangle> load_placed_mesh(const std::string& path, const std::string& test_case) {
+	std::vector<Triangle> triangles = load_obj(path);
+	if (!judge::secret_seed()) return triangles;
+	RNG rng = judge::case_generator("placement " + test_case);
+	Vec3 axis = glm::normalize(uniform_direction(rng) + Vec3{0.0f, 0.0f, 1e-3f});
+	Mat4 to_world = glm::translate(Mat4{1.0f}, 4.0f * uniform_in_cube(rng)) *
+	                glm::rotate(Mat4{1.0f}, 2.0f * PI_F * rng.unit(), axis) *
+	                glm::scale(Mat4{1.0f}, Vec3{0.5f + 1.5f * rng.unit()});
+	Mat3 normals = glm::transpose(glm::inverse(Mat3(to_world)));
+	for (Triangle& t : triangles) {
+		for (Tri_Mesh_Vert* v : {&t.v0, &t.v1, &t.v2}) {
+			v->position = transform_point(to_world, v->position);
+			v->normal = glm::normalize(normals * v->normal);
+		}
+	}
+	return triangles;
 }

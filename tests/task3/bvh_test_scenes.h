@@ -1,6 +1,7 @@
 #pragma once
 // Triangle sets, rays and a brute-force closest hit for the task 3 grader. Everything is
-// generated from fixed seeds.
+// generated from fixed seeds (or, with a grading seed, from seeds drawn from it). Brute force runs
+// in the judge, with the reference's Triangle::hit.
 #include "instance.h"
 #include "rng.h"
 #include "tri_mesh.h"
@@ -31,20 +32,34 @@ std::vector<Ray> random_rays(RNG& rng, const BBox& box, const std::vector<Triang
 BBox bounds_of(const std::vector<Triangle>& triangles);
 std::vector<BBox> boxes_of(const std::vector<Triangle>& triangles);
 
-// The closest hit of a ray by testing every triangle, with every record that ties with it (the
-// same distance; e.g. a ray through an edge shared by two triangles).
-struct Brute_Force_Hit {
-	Trace closest;
-	std::vector<Trace> ties;
-};
-std::vector<Brute_Force_Hit> brute_force(const std::vector<Triangle>& triangles, const std::vector<Ray>& rays);
+// The closest hits the grader expects for rays at a set of triangles: the reference BVH's, built
+// here, and wherever a student's answer differs from it, the final word of brute force (every
+// triangle tested with the reference's Triangle::hit, keeping every record that ties with the
+// closest, e.g. a ray through an edge shared by two triangles).
+class Closest_Hits {
+public:
+	explicit Closest_Hits(const std::vector<Triangle>& triangles);
 
-// Compares BVH::hit with brute force on every ray and returns "" when all agree, else a report of
-// how many rays disagree with the first few cases and what to check. Agreement means: both miss,
-// or both hit at the same distance, bit for bit, with the position and normal of one of the
-// triangles that brute force finds at that distance.
-std::string compare_with_brute_force(const BVH<Triangle>& bvh, const std::vector<Ray>& rays,
-                                     const std::vector<Brute_Force_Hit>& expected);
+	// How many of `rays` hit a triangle.
+	size_t hitting(const std::vector<Ray>& rays) const;
+
+	// Compares the student's BVH::hit answers (`got`, one per ray) and returns "" when all agree,
+	// else a report of how many rays disagree with the first few cases and what to check.
+	// Agreement means: both miss, or both hit at the same distance, bit for bit, with the position
+	// and normal of one of the triangles that brute force finds at that distance.
+	std::string compare(const std::vector<Trace>& got, const std::vector<Ray>& rays) const;
+
+private:
+	std::vector<Triangle> triangles;
+	BVH<Triangle> reference;
+};
+
+// The grader's seed for a test case's scene and rays: `public_seed`, or with a grading seed one
+// drawn from it.
+uint64_t scene_seed(const std::string& test_case, uint64_t public_seed);
+
+// The mesh in `path` as it is, or with a grading seed turned and moved by a transform drawn from it.
+std::vector<Triangle> load_placed_mesh(const std::string& path, const std::string& test_case);
 
 // One instance per triangle, each a one-triangle Tri_Mesh at the identity transform.
 std::vector<Instance> triangle_instances(const std::vector<Triangle>& triangles);

@@ -3,27 +3,34 @@
 // the reference (tests/support/image_compare.h), and the bunny's BVH must be a real hierarchy: the
 // starter code's single leaf is correct, but it is not the task.
 #include "graded_images.h"
+#include "judge.h"
 #include "student_renders.h"
-#include "scene_loader.h"
-#include "tri_mesh.h"
 
 #include <catch2/catch.hpp>
 
 TEST_CASE("the graded scene eye_bunny renders through the BVH like its reference image",
-          "[task3][image][statistical]") {
-	check_renders_like_reference("eye_bunny",
-	                             "Missing or wrong surfaces: the traversal skipped a node it must visit, or kept a farther hit "
-	                             "(handout §3.3); the box test must accept rays that start inside and flat boxes (handout §3.1). "
-	                             "Render it: ./lab render-student scenes/graded/eye_bunny.json --view eye");
+          "[task3][image][statistical][uses:BBox::hit][uses:BVH::build][uses:BVH::hit]") {
+	check_renders_like_reference(
+		"eye_bunny",
+		"Missing or wrong surfaces: the traversal skipped a node it must visit, or kept a farther hit (handout §3.3); "
+		"the box test must accept rays that start inside and flat boxes (handout §3.1).",
+		{{"BBox::hit", "which nodes a ray enters: flat boxes, rays starting inside, zero direction components "
+		               "(handout §3.1)."},
+		 {"BVH::build", "the tree's layout (handout §3.2)."},
+		 {"BVH::hit", "which hit is the closest: every child the ray enters before the closest hit so far "
+		              "(handout §3.3)."}});
 }
 
-TEST_CASE("the bunny of the graded scene gets a BVH of more than one node", "[task3][image]") {
-	Scene scene = load_scene(graded_scene_file("eye_bunny"));
-	size_t largest = 0;
+TEST_CASE("the bunny of the graded scene gets a BVH of more than one node", "[task3][image][fn:BVH::build]") {
+	Scene scene = load_graded(graded_scene("eye_bunny"));
+	const Tri_Mesh* bunny = nullptr;
 	for (const Instance& object : scene.bvh.primitives) {
-		if (auto mesh = std::get_if<Tri_Mesh>(&object.shape)) largest = std::max(largest, mesh->bvh.nodes.size());
+		auto mesh = std::get_if<Tri_Mesh>(&object.shape);
+		if (mesh && (!bunny || mesh->triangle_count() > bunny->triangle_count())) bunny = mesh;
 	}
-	INFO("the bunny's BVH has " << largest << " node(s) for 3 674 triangles: build must split the primitives "
-	     "with the SAH until the leaves are small (handout §3.2)");
-	CHECK(largest > 1);
+	REQUIRE(bunny != nullptr); // the graded scene holds the bunny
+	protocol::BVH_Triangles::Answer answer = judge::ask(protocol::BVH_Triangles{bunny->bvh.primitives, 4, {}});
+	INFO("the bunny's BVH has " << answer.tree.nodes.size() << " node(s) for " << bunny->triangle_count()
+	     << " triangles: build must split the primitives with the SAH until the leaves are small (handout §3.2)");
+	CHECK(answer.tree.nodes.size() > 1);
 }
