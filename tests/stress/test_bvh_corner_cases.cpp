@@ -3,7 +3,7 @@
 // lying in them (0 * inf = NaN), flat boxes of planar walls, coincident centroids (a split that
 // cannot separate anything), 10^6 identical triangles, and a tree dozens of levels deep.
 #include "rng.h"
-#include "shape_oracle.h"
+#include "stress_show.h"
 #include "stress_count.h"
 #include "stress_meshes.h"
 
@@ -52,7 +52,7 @@ Stress_Count compare(const std::vector<Triangle>& tris, const std::function<Ray(
 		Trace expected = brute_force(tris, ray), got = mesh.hit(ray);
 		bool differ = !same(got, expected) && !same(got, brute_force_in_boxes(tris, ray));
 		count.add(differ, [&] {
-			return shape_oracle::show(ray) + ": brute force " +
+			return stress::show(ray) + ": brute force " +
 			       (expected.hit ? "hits at t = " + std::to_string(expected.distance) : std::string("misses")) +
 			       ", the BVH " + (got.hit ? "hits at t = " + std::to_string(got.distance) : std::string("misses"));
 		});
@@ -169,7 +169,7 @@ TEST_CASE("Stress: a BVH over 10^6 identical triangles builds and hits like one 
 		Ray ray(Vec3{0.0f, 0.0f, 0.5f} + 3.0f * w, -w + 0.5f * random_unit(rng));
 		Trace expected = one.hit(ray), got = mesh.hit(ray);
 		count.add(got.hit != expected.hit || (got.hit && got.distance != expected.distance),
-		          [&] { return shape_oracle::show(ray); });
+		          [&] { return stress::show(ray); });
 	}
 	require_agreement(count, "10^6 identical triangles");
 }

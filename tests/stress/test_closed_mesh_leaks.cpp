@@ -10,7 +10,7 @@
 // every triangle (task 2), and through Tri_Mesh::hit (the BVH, task 3, which must accept the same
 // hits).
 #include "rng.h"
-#include "shape_oracle.h"
+#include "stress_show.h"
 #include "stress_count.h"
 #include "stress_meshes.h"
 
@@ -83,7 +83,7 @@ void count_leaks(const std::vector<Triangle>& tris, Vec3 centre, float distance,
 		Vec3 w = entering_direction(rng, normals);
 		Vec3 outer = target + distance * w, inner = target - inside * w;
 		for (Ray ray : {Ray(outer, target - outer), Ray(inner, target - inner)}) {
-			auto describe = [&] { return shape_oracle::show(ray) + " aimed at " + shape_oracle::show(target); };
+			auto describe = [&] { return stress::show(ray) + " aimed at " + stress::show(target); };
 			bool any = false;
 			for (const Triangle& tri : shuffled) any = any || tri.hit(ray).hit;
 			count.add(!any, describe);

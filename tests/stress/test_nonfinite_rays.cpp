@@ -2,7 +2,7 @@
 // zero-area triangles give "no hit", never a NaN distance or a crash, at every level: Triangle,
 // Sphere, a mesh's BVH, and a whole scene (instances with transforms).
 #include "scene.h"
-#include "shape_oracle.h"
+#include "stress_show.h"
 #include "stress_count.h"
 #include "stress_meshes.h"
 
@@ -50,7 +50,7 @@ void count_hits(const char* what, const Hit_Function& hit, const std::vector<Ray
 	for (const Ray& ray : rays) {
 		Trace got = hit(ray);
 		count.add(got.hit, [&] {
-			return std::string(what) + " " + shape_oracle::show(ray) + " gave a hit at t = " + std::to_string(got.distance);
+			return std::string(what) + " " + stress::show(ray) + " gave a hit at t = " + std::to_string(got.distance);
 		});
 	}
 }
@@ -139,8 +139,8 @@ TEST_CASE("Stress: zero-area triangles are never hit, alone or inside a mesh's B
 			Ray ray(target + 2.0f * w, -w);
 			Trace alone = tri.hit(ray), in_mesh = mesh.hit(ray);
 			count.add(alone.hit || in_mesh.hit, [&] {
-				return shape_oracle::show(ray) + " hit the zero-area triangle " + shape_oracle::show(tri.v0.position) +
-				       ", " + shape_oracle::show(tri.v1.position) + ", " + shape_oracle::show(tri.v2.position);
+				return stress::show(ray) + " hit the zero-area triangle " + stress::show(tri.v0.position) +
+				       ", " + stress::show(tri.v1.position) + ", " + stress::show(tri.v2.position);
 			});
 		}
 	}

@@ -11,7 +11,7 @@
 #include "lifecycle.h"
 #include "pathtracer.h"
 #include "rng.h"
-#include "shape_oracle.h"
+#include "stress_show.h"
 #include "stress_count.h"
 #include "stress_meshes.h"
 
@@ -84,7 +84,7 @@ Spawned_Rays count_self_intersections(const Material& floor, bool environment, i
 			}
 			count.spawned += !spawned_rays.empty();
 			count.self_intersections.add(hit_floor_again, [&] {
-				return "offset " + std::to_string(offset) + ", camera ray " + shape_oracle::show(ray);
+				return "offset " + std::to_string(offset) + ", camera ray " + stress::show(ray);
 			});
 		}
 	}

@@ -5,7 +5,7 @@
 // discriminant b^2 - ac cancels catastrophically in float: it misses 31-45 % of true hits once
 // r / D <= 1e-4 (testing-anchors §3). The stable form a (r - l)(r + l) does not.
 #include "rng.h"
-#include "shape_oracle.h"
+#include "stress_show.h"
 #include "shapes.h"
 #include "stress_count.h"
 #include "stress_meshes.h"
@@ -55,7 +55,7 @@ TEST_CASE("Stress: tiny and huge spheres (radius / distance 1e-1 ... 1e-6) are h
 				Ray ray = aimed_ray(rng, radius, ratio, 0.9f * rng.unit());
 				Trace got = sphere.hit(ray);
 				auto describe = [&] {
-					return "radius " + std::to_string(radius) + ", " + shape_oracle::show(ray) + ", t = " +
+					return "radius " + std::to_string(radius) + ", " + stress::show(ray) + ", t = " +
 					       std::to_string(got.distance);
 				};
 				misses.add(!got.hit, describe);
@@ -89,7 +89,7 @@ TEST_CASE("Stress: tangent and nearly tangent rays at every scale give no NaN", 
 				Trace got = sphere.hit(ray);
 				bool bad = got.hit && !(std::isfinite(got.distance) && is_finite(got.position) && is_finite(got.normal) &&
 				                        std::abs(glm::length(got.normal) - 1.0f) < 1e-3f);
-				nans.add(bad, [&] { return "radius " + std::to_string(radius) + ", " + shape_oracle::show(ray); });
+				nans.add(bad, [&] { return "radius " + std::to_string(radius) + ", " + stress::show(ray); });
 			}
 		}
 	}

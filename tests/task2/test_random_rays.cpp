@@ -1,19 +1,22 @@
-// Task 2, handout §2.1-§2.3: Triangle::hit and Sphere::hit against a double-precision oracle
-// (tests/support/shape_oracle.h) on 10^5 random rays each, and against NaN on extreme inputs.
+// Task 2, handout §2.1-§2.3: Triangle::hit and Sphere::hit against the reference on 10^5 random
+// rays each, and against NaN on extreme inputs. The student's answers come from the subject, all the
+// rays of a test case in one request.
 //
-// A ray counts as wrong only when the oracle is sure of the answer: rays within rounding error
-// (the oracle's per-ray first-order bound) of an edge, the silhouette or an end of dist_bounds, or
-// within the allowed edge slack of 1e-4, may go either way: about 0.1 % of the rays here.
-// Distances are compared within the same per-ray bound.
+// A ray counts as wrong only when the reference is sure of the answer (shape_check.h): rays within
+// rounding error of an edge, the silhouette or an end of dist_bounds, or within the allowed edge
+// slack of 1e-4, may go either way: about 0.1 % of the rays here. Distances are compared within
+// the spread of the reference's answers for rays moved by rounding.
+#include "judge.h"
 #include "rng.h"
-#include "shape_oracle.h"
+#include "shape_check.h"
+#include "student_shapes.h"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <sstream>
 
-using namespace shape_oracle;
+using namespace task2;
 
 namespace {
 
@@ -73,11 +76,11 @@ Triangle random_triangle(RNG& rng, float scale) {
 
 } // namespace
 
-TEST_CASE("Triangle::hit agrees with a double-precision oracle on 10^5 random rays") {
+TEST_CASE("Triangle::hit agrees with the reference on 10^5 random rays", "[fn:Triangle::hit]") {
 	// Origins within 10 sizes of the triangle, aimed at points around it (half of them inside),
 	// |dir| from 0.01 to 100, coordinates at scales from 1e-3 to 1e3.
-	RNG rng(1234);
-	Tally tally;
+	RNG rng(judge::secret_seed().value_or(1234));
+	std::vector<protocol::Triangle_Hits::Query> queries;
 	for (int i = 0; i < RAYS; i++) {
 		float scale = log_uniform(rng, -3.0f, 3.0f);
 		Triangle tri = random_triangle(rng, scale);
@@ -96,8 +99,13 @@ TEST_CASE("Triangle::hit agrees with a double-precision oracle on 10^5 random ra
 		Vec3 target = tri.v0.position + u * e1 + v * e2;
 		Vec3 origin = scale * in_cube(rng, 10.0f);
 		Vec3 dir = (target - origin) / glm::length(target - origin) * log_uniform(rng, -2.0f, 2.0f);
-		Ray ray(origin, dir, random_bounds(rng, 2.0f * glm::length(target - origin) / glm::length(dir)));
-		tally.add(expect_hit(tri, ray), tri.hit(ray), ray,
+		queries.push_back({tri, Ray(origin, dir, random_bounds(rng, 2.0f * glm::length(target - origin) / glm::length(dir)))});
+	}
+	std::vector<Trace> got = student_hits(queries);
+	Tally tally;
+	for (size_t i = 0; i < queries.size(); i++) {
+		const auto& [tri, ray] = queries[i];
+		tally.add(expect_hit(tri, ray), got[i], ray,
 		          "triangle " + show(tri.v0.position) + ", " + show(tri.v1.position) + ", " + show(tri.v2.position),
 		          "handout §2.1");
 	}
@@ -109,22 +117,27 @@ TEST_CASE("Triangle::hit agrees with a double-precision oracle on 10^5 random ra
 	CHECK(tally.hits > RAYS / 5);
 }
 
-TEST_CASE("Sphere::hit agrees with a double-precision oracle on 10^5 random rays") {
+TEST_CASE("Sphere::hit agrees with the reference on 10^5 random rays", "[fn:Sphere::hit]") {
 	// Radii from 0.01 to 100; origins from 0.2 r (inside) to 30 r away, aimed at points within
 	// 1.3 r of the centre (most hit, some pass by); |dir| from 0.01 to 100.
-	RNG rng(5678);
-	Tally tally;
+	RNG rng(judge::secret_seed().value_or(5678));
+	std::vector<protocol::Sphere_Hits::Query> queries;
 	for (int i = 0; i < RAYS; i++) {
 		Sphere sphere{log_uniform(rng, -2.0f, 2.0f)};
 		float r = sphere.radius;
 		Vec3 origin = r * log_uniform(rng, std::log10(0.2f), std::log10(30.0f)) * random_unit(rng);
 		Vec3 target = 1.3f * r * std::cbrt(rng.unit()) * random_unit(rng);
 		Vec3 dir = glm::normalize(target - origin) * log_uniform(rng, -2.0f, 2.0f);
-		Ray ray(origin, dir, random_bounds(rng, 2.0f * (glm::length(origin) + r) / glm::length(dir)));
+		queries.push_back({sphere, Ray(origin, dir, random_bounds(rng, 2.0f * (glm::length(origin) + r) / glm::length(dir)))});
+	}
+	std::vector<Trace> got = student_hits(queries);
+	Tally tally;
+	for (size_t i = 0; i < queries.size(); i++) {
+		const auto& [sphere, ray] = queries[i];
 		std::ostringstream shape;
 		shape.precision(9);
-		shape << "sphere of radius " << r;
-		tally.add(expect_hit(sphere, ray), sphere.hit(ray), ray, shape.str(), "handout §2.2");
+		shape << "sphere of radius " << sphere.radius;
+		tally.add(expect_hit(sphere, ray), got[i], ray, shape.str(), "handout §2.2");
 	}
 	INFO(tally.wrong << " of " << RAYS << " rays got a wrong answer (" << tally.either << " rays within rounding of "
 	     "the silhouette or a bound were accepted either way; " << tally.hits << " hits). First: " << tally.first);
@@ -134,7 +147,7 @@ TEST_CASE("Sphere::hit agrees with a double-precision oracle on 10^5 random rays
 	CHECK(tally.hits > RAYS / 5);
 }
 
-TEST_CASE("Triangle::hit and Sphere::hit never return NaN, whatever finite input they get") {
+TEST_CASE("Triangle::hit and Sphere::hit never return NaN, whatever finite input they get", "[fn:Triangle::hit][fn:Sphere::hit]") {
 	// Every coordinate and bound drawn with random sign and magnitude 10^-30 ... 10^30, some exactly
 	// 0; radii 0 or 10^-15 ... 10^15 (so that r^2 is still a normal float). Products overflow and
 	// underflow; the answer may be a hit or a miss, but a hit needs a finite distance inside
@@ -142,7 +155,7 @@ TEST_CASE("Triangle::hit and Sphere::hit never return NaN, whatever finite input
 	// accept tests positively so NaN fails them, handout §2.3.) One exception: a sphere of radius 0,
 	// or one so small against its distance (|o| / r > ~1e7) that the float hit point lands on its
 	// centre, has no normal; such hits are not checked for a NaN normal.
-	RNG rng(31337);
+	RNG rng(judge::secret_seed().value_or(31337));
 	auto extreme = [&](float max_exponent = 30.0f) {
 		if (rng.integer(10) == 0) return 0.0f;
 		return (rng.coin_flip(0.5f) ? -1.0f : 1.0f) * log_uniform(rng, -max_exponent, max_exponent);
@@ -157,8 +170,8 @@ TEST_CASE("Triangle::hit and Sphere::hit never return NaN, whatever finite input
 		if (normal_exists && std::isnan(got.normal.x + got.normal.y + got.normal.z)) return "a hit with a NaN normal";
 		return "";
 	};
-	size_t bad = 0;
-	std::string first;
+	std::vector<protocol::Triangle_Hits::Query> triangle_queries;
+	std::vector<protocol::Sphere_Hits::Query> sphere_queries;
 	for (int i = 0; i < RAYS; i++) {
 		Ray ray(extreme_vec(), extreme_vec());
 		if (rng.coin_flip(0.5f)) {
@@ -170,10 +183,19 @@ TEST_CASE("Triangle::hit and Sphere::hit never return NaN, whatever finite input
 		tri.v0 = {extreme_vec(), n};
 		tri.v1 = {extreme_vec(), n};
 		tri.v2 = {extreme_vec(), n};
-		Sphere sphere{std::abs(extreme(15.0f))};
-		Trace sphere_hit = sphere.hit(ray);
+		triangle_queries.push_back({tri, ray});
+		sphere_queries.push_back({Sphere{std::abs(extreme(15.0f))}, ray});
+	}
+	std::vector<Trace> triangle_hits = student_hits(triangle_queries), sphere_hits = student_hits(sphere_queries);
+	size_t bad = 0;
+	std::string first;
+	for (int i = 0; i < RAYS; i++) {
+		const Ray& ray = triangle_queries[i].ray;
+		const Triangle& tri = triangle_queries[i].triangle;
+		const Sphere& sphere = sphere_queries[i].sphere;
+		const Trace& sphere_hit = sphere_hits[i];
 		bool off_centre = sphere.radius > 0.0f && glm::length(DVec3(sphere_hit.position)) >= 0.5 * sphere.radius;
-		std::string tri_problem = problem_of(tri.hit(ray), ray, true);
+		std::string tri_problem = problem_of(triangle_hits[i], ray, true);
 		std::string sphere_problem = problem_of(sphere_hit, ray, off_centre);
 		if (tri_problem.empty() && sphere_problem.empty()) continue;
 		if (bad++ > 0) continue;

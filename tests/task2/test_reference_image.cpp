@@ -7,10 +7,12 @@
 #include <catch2/catch.hpp>
 
 TEST_CASE("the graded scene eye_bunny renders like its reference image",
-          "[task2][image][statistical]") {
-	check_renders_like_reference("eye_bunny",
-	                             "Wrong shading on the sphere or the bunny: check that hit normals point outwards"
-	                             ", that the barycentric interpolation of vertex normals uses (1 - u - v, u,"
-	                             " v) (handout §2.2, §2.3); missing objects: check the distance bounds. Render it: ./lab "
-	                             "render-student scenes/graded/eye_bunny.json --view eye");
+          "[task2][image][statistical][uses:Triangle::hit][uses:Sphere::hit]") {
+	check_renders_like_reference(
+		"eye_bunny",
+		"Wrong shading on the sphere or the bunny: check that hit normals point outwards, that the barycentric "
+		"interpolation of vertex normals uses (1 - u - v, u, v) (handout §2.1, §2.2); missing objects: check the "
+		"distance bounds (handout §2.3).",
+		{{"Triangle::hit", "the bunny's and the floor's hits and their interpolated normals (handout §2.1)."},
+		 {"Sphere::hit", "the ball's hits and its outward normals (handout §2.2)."}});
 }
