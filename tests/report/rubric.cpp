@@ -31,6 +31,14 @@ double Rubric::Task::total_weight() const {
 	return total;
 }
 
+double Rubric::Task::penalty(const Test_Case& c) const {
+	if (c.weight > 0.0) return 0.0;
+	if (c.penalty >= 0.0) return c.penalty;
+	size_t weighted = 0;
+	for (const Test_Case& other : test_cases) weighted += other.weight > 0.0;
+	return weighted == 0 ? 0.0 : points / double(weighted);
+}
+
 Rubric Rubric::read(const std::filesystem::path& file) {
 	std::ifstream in(file);
 	if (!in) throw Rubric_Error(file.string() + ": cannot be read");
@@ -56,6 +64,7 @@ Rubric Rubric::read(const std::filesystem::path& file) {
 			Test_Case test_case;
 			test_case.name = c.value("name", "");
 			test_case.weight = c.value("weight", 1.0);
+			test_case.penalty = c.value("penalty", -1.0);
 			test_case.visibility = c.value("visibility", "visible");
 			if (test_case.name.empty() || !(test_case.weight >= 0.0) || !VISIBILITIES.count(test_case.visibility)) {
 				throw Rubric_Error(where + ": a test case needs a \"name\", a weight >= 0 and a visibility of "
@@ -92,7 +101,7 @@ Task_Score score(const Rubric& rubric, const Task_Result& result) {
 		Scored_Test_Case scored;
 		scored.name = entry.name;
 		scored.visibility = entry.visibility;
-		scored.max_score = task.points * entry.weight / task.total_weight();
+		scored.max_score = task.total_weight() > 0.0 ? task.points * entry.weight / task.total_weight() : 0.0;
 		auto ran = std::find_if(result.test_cases.begin(), result.test_cases.end(),
 		                        [&](const Test_Case& c) { return c.name == entry.name; });
 		if (result.status == Status::not_run) {
@@ -103,10 +112,11 @@ Task_Score score(const Rubric& rubric, const Task_Result& result) {
 			scored.passed = ran->passed;
 			scored.output = ran->passed ? "" : output_of(*ran);
 		}
-		scored.score = scored.passed ? scored.max_score : 0.0;
+		scored.score = scored.passed ? scored.max_score : -task.penalty(entry);
 		score.score += scored.score;
 		score.test_cases.push_back(scored);
 	}
+	score.score = std::max(0.0, score.score);
 	return score;
 }
 
@@ -125,7 +135,8 @@ void write_default_rubric(std::ostream& out, const std::vector<Task_Result>& stu
 		tasks.push_back({{"task", result.task.number}, {"points", POINTS.at(result.task.number)}, {"test_cases", cases}});
 	}
 	nlohmann::ordered_json rubric{{"about", "Points per task and their split over its test cases (tests/report/rubric.h). "
-	                                        "Weight 0: a test case the shipped stubs pass, which earns nothing by itself."},
+	                                        "Weight 0: a requirement the shipped stubs pass, which earns nothing by itself "
+	                                        "and costs a test case's average points when it fails."},
 	                              {"tasks", tasks}};
 	out << rubric.dump(1, '\t') << "\n";
 }

@@ -8,10 +8,13 @@
 //              ...]}
 //
 // A test case is worth points * weight / (sum of its task's weights); it earns them when it passes.
-// Weight 0 marks a test case that earns nothing by itself (one that a program doing nothing passes,
-// such as "a scene without light renders black"): the shipped stubs score exactly 0. "visibility"
-// (Gradescope's words: visible, after_published, after_due_date, hidden; default visible) says when
-// students see the test case. Every test case of every judge must be in the rubric, and nothing else.
+// Weight 0 marks a requirement: a test case that earns nothing by itself because a program doing
+// nothing passes it (the stubs' single-leaf BVH answers every ray right, "a scene without light
+// renders black"), but that costs "penalty" points when it fails (default: what a weighted test case
+// of its task is worth on average). A task scores max(0, earned - penalties): the shipped stubs score
+// exactly 0, the reference full marks. "visibility" (Gradescope's words: visible, after_published,
+// after_due_date, hidden; default visible) says when students see the test case. Every test case of
+// every judge must be in the rubric, and nothing else.
 #include "task_result.h"
 
 #include <filesystem>
@@ -28,19 +31,22 @@ struct Rubric {
 	struct Test_Case {
 		std::string name;
 		double weight = 1.0;
+		double penalty = -1.0; // a requirement's cost when it fails; < 0: the default
 		std::string visibility = "visible";
 	};
 	struct Task {
 		double points = 0.0;
 		std::vector<Test_Case> test_cases;
 		double total_weight() const;
+		double penalty(const Test_Case& c) const; // 0 for a weighted test case
 	};
 	std::map<int, Task> tasks;
 
 	static Rubric read(const std::filesystem::path& file); // throws Rubric_Error naming the problem
 };
 
-// One test case's score.
+// One test case's score: max_score when it passed, 0 when it failed, or for a requirement 0 when it
+// passed and -penalty when it failed.
 struct Scored_Test_Case {
 	std::string name, visibility, output;
 	double score = 0.0, max_score = 0.0;
