@@ -1,0 +1,85 @@
+#!/usr/bin/env bash
+# The Gradescope autograder bundle (label gradescope): ./lab autograder makes it, then a fresh
+# Debian 12 root made by debootstrap, laid out like Gradescope's (/autograder/source, submission,
+# results), runs its setup.sh and then run_autograder for example submissions, and each
+# results.json must hold the expected score (all reference: full marks; the stubs: 0; one realistic
+# mistake: fewer) with one entry per test case of the rubric.
+#   test_autograder.sh REPOSITORY_ROOT OUT
+set -euo pipefail
+root=$1 out=$2
+fail() { echo "autograder test: $*" >&2; exit 1; }
+for program in debootstrap zip unzip chroot; do
+	command -v "$program" >/dev/null || fail "$program is not installed (Debian packages debootstrap, zip, unzip)"
+done
+[ "$(id -u)" -eq 0 ] || fail "needs root (debootstrap and chroot)"
+rm -rf "$out"
+mkdir -p "$out"
+system=$out/debian
+unmount() {
+	for mount in "$system/dev/pts" "$system/dev" "$system/proc" "$system/sys"; do
+		mountpoint -q "$mount" && umount -l "$mount"
+	done
+	return 0
+}
+trap unmount EXIT
+
+start=$SECONDS
+"$root/tools/make-autograder" "$out/autograder.zip" --seed 4242 >/dev/null || fail "./lab autograder failed"
+unzip -l "$out/autograder.zip" | grep -q " setup.sh$" || fail "the bundle has no setup.sh at its root"
+unzip -l "$out/autograder.zip" | grep -q " run_autograder$" || fail "the bundle has no run_autograder at its root"
+! unzip -l "$out/autograder.zip" | grep -q " reference/" || fail "the bundle holds reference/ sources"
+echo "autograder test: bundle made ($(du -h "$out/autograder.zip" | cut -f1)) in $((SECONDS - start)) s"
+
+start=$SECONDS
+debootstrap --variant=minbase bookworm "$system" http://deb.debian.org/debian >"$out/debootstrap.log" 2>&1 ||
+	{ tail -20 "$out/debootstrap.log" >&2; fail "debootstrap failed"; }
+cp /etc/resolv.conf "$system/etc/resolv.conf"
+mount -t proc proc "$system/proc"
+mount -t sysfs sys "$system/sys"
+mount --bind /dev "$system/dev"
+mount --bind /dev/pts "$system/dev/pts"
+mkdir -p "$system/autograder/source" "$system/autograder/submission" "$system/autograder/results"
+unzip -q "$out/autograder.zip" -d "$system/autograder/source"
+cp "$system/autograder/source/run_autograder" "$system/autograder/run_autograder" # as Gradescope does
+echo "autograder test: a Debian 12 root in $((SECONDS - start)) s"
+
+start=$SECONDS
+chroot "$system" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root bash /autograder/source/setup.sh \
+	>"$out/setup.log" 2>&1 || { tail -30 "$out/setup.log" >&2; fail "setup.sh failed in the Debian root"; }
+echo "autograder test: setup.sh ran in $((SECONDS - start)) s"
+
+# grade NAME EXPECTATION FILES...: one submission through run_autograder; EXPECTATION is full, zero
+# or less (than full marks).
+total=$(grep -o '"points": *[0-9.]*' "$root/grading/rubric.json" | grep -o '[0-9.]*$' | paste -sd+ | bc)
+cases=$(grep -c '"name":' "$root/grading/rubric.json")
+grade() {
+	local name=$1 expectation=$2
+	shift 2
+	rm -rf "$system/autograder/submission"/* "$system/autograder/results"/*
+	for file in "$@"; do cp "$file" "$system/autograder/submission/"; done
+	local start=$SECONDS
+	chroot "$system" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root /autograder/run_autograder \
+		>"$out/$name.log" 2>&1 || fail "$name: run_autograder failed: $(tail -5 "$out/$name.log")"
+	local results=$system/autograder/results/results.json
+	[ -f "$results" ] || fail "$name: no results.json"
+	cp "$results" "$out/$name.results.json"
+	local score tests
+	score=$(grep -o '^\s*"score": *[0-9.]*' "$results" | head -1 | grep -o '[0-9.]*$')
+	tests=$(grep -c '"max_score"' "$results")
+	[ "$tests" -eq "$cases" ] || fail "$name: results.json has $tests test entries, the rubric $cases"
+	case "$expectation" in
+	full) awk -v s="$score" -v t="$total" 'BEGIN { exit !(s == t) }' || fail "$name: score $score, expected $total" ;;
+	zero) awk -v s="$score" 'BEGIN { exit !(s == 0) }' || fail "$name: score $score, expected 0" ;;
+	less) awk -v s="$score" -v t="$total" 'BEGIN { exit !(s > 0 && s < t) }' || fail "$name: score $score, expected 0 < score < $total" ;;
+	esac
+	grep -q "inputs: drawn from the grading seed" "$results" || grep -q "grading seed" "$system/autograder/results/graded/task1.json" ||
+		fail "$name: the bundle's grading seed was not used"
+	echo "autograder test: $name scored $score of $total ($expectation) in $((SECONDS - start)) s; $(grep -o 'sandbox: [^(;]*' "$system/autograder/results/graded/task1.json" | head -1)"
+}
+grade reference full "$root"/reference/task*.cpp
+grade stubs zero
+mistake=$out/mistake
+mkdir -p "$mistake"
+cp "$root"/reference/task*.cpp "$mistake/"
+cp "$root/tests/mutants/task4/no_offset.cpp" "$mistake/task4_path.cpp"
+grade one_mistake less "$mistake"/task*.cpp
