@@ -90,6 +90,11 @@ int main(int argc, char** argv) {
 		char line[80];
 		std::snprintf(line, sizeof line, "total: %.2f of %.2f points\n", total, most);
 		summary += line;
+		for (const Task_Result& t : tasks) {
+			if (t.sandbox.empty()) continue;
+			summary += "How the code ran: " + t.sandbox + "; inputs: " + t.inputs + "\n";
+			break;
+		}
 		write_gradescope_results(results, scores, tasks, execution_time, summary);
 		write_junit(junit, scores);
 		// One line for a gradebook (grade-class): the points of each task, then the total.
