@@ -25,9 +25,10 @@ trap unmount EXIT
 
 start=$SECONDS
 "$root/tools/make-autograder" "$out/autograder.zip" --seed 4242 >/dev/null || fail "./lab autograder failed"
-unzip -l "$out/autograder.zip" | grep -q " setup.sh$" || fail "the bundle has no setup.sh at its root"
-unzip -l "$out/autograder.zip" | grep -q " run_autograder$" || fail "the bundle has no run_autograder at its root"
-! unzip -l "$out/autograder.zip" | grep -q " reference/" || fail "the bundle holds reference/ sources"
+unzip -Z1 "$out/autograder.zip" >"$out/bundle.txt"
+grep -qx "setup.sh" "$out/bundle.txt" || fail "the bundle has no setup.sh at its root"
+grep -qx "run_autograder" "$out/bundle.txt" || fail "the bundle has no run_autograder at its root"
+! grep -q "^reference/" "$out/bundle.txt" || fail "the bundle holds reference/ sources"
 echo "autograder test: bundle made ($(du -h "$out/autograder.zip" | cut -f1)) in $((SECONDS - start)) s"
 
 start=$SECONDS
