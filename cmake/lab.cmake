@@ -45,25 +45,31 @@ function(lab_prebuilt_reference n)
 		framework_headers "$<LINK_LIBRARY:WHOLE_ARCHIVE,task${n}_reference_archive>")
 endfunction()
 
-# lab_link_tasks(<target> <impl of task 1> ... <impl of task 7>): link the chosen implementations.
-function(lab_link_tasks target)
-	set(n 1)
-	foreach(impl IN LISTS ARGN)
-		target_link_libraries(${target} PRIVATE task${n}_${impl})
-		math(EXPR n "${n} + 1")
-	endforeach()
-	target_link_libraries(${target} PRIVATE framework)
-endfunction()
-
-# The implementation list with task <n> from <impl_n> and every other task from the reference.
-function(lab_mix out n impl_n)
-	set(list "")
-	foreach(i RANGE 1 7)
-		if(i EQUAL n)
-			list(APPEND list ${impl_n})
-		else()
-			list(APPEND list reference)
+# lab_link_tasks(<target> <impl> [TASK<n> <impl_n>]...): link task <n> from <impl_n> where one is
+# named and every other task from <impl>, e.g. lab_link_tasks(grader_task3_student reference TASK3
+# student); then the framework, with the accelerator that suits the choice (framework/accel/
+# accelerator.h): the fast one only where tasks 2 and 3 are both the reference, else the plain one,
+# which is task 3's BVH::hit, so that a student's code runs end to end. ACCELERATOR fast|plain
+# overrides that choice: only to prove that a test notices the wrong one.
+function(lab_link_tasks target impl)
+	cmake_parse_arguments(PARSE_ARGV 2 arg "" "TASK1;TASK2;TASK3;TASK4;TASK5;TASK6;TASK7;ACCELERATOR" "")
+	if(arg_UNPARSED_ARGUMENTS)
+		message(FATAL_ERROR "lab_link_tasks(${target}): unexpected arguments ${arg_UNPARSED_ARGUMENTS}")
+	endif()
+	foreach(n RANGE 1 7)
+		set(impl_${n} ${impl})
+		if(arg_TASK${n})
+			set(impl_${n} ${arg_TASK${n}})
 		endif()
+		target_link_libraries(${target} PRIVATE task${n}_${impl_${n}})
 	endforeach()
-	set(${out} ${list} PARENT_SCOPE)
+	set(accelerator ${arg_ACCELERATOR})
+	if(NOT accelerator)
+		if(impl_2 STREQUAL "reference" AND impl_3 STREQUAL "reference")
+			set(accelerator fast)
+		else()
+			set(accelerator plain)
+		endif()
+	endif()
+	target_link_libraries(${target} PRIVATE accelerator_${accelerator} framework)
 endfunction()

@@ -102,7 +102,7 @@ TEST_CASE("only an importance-sampled environment map builds a sampling table", 
 	CHECK(importance.sampler.cdf.size() == 8 * 4);
 }
 
-TEST_CASE("BVH::occluded agrees with hit() and stops at the first hit", "[framework][skip]") {
+TEST_CASE("the occlusion query agrees with the closest hit and stops at the first hit", "[framework][skip]") {
 	SECTION("eight copies of one sphere on the ray: any hit tests one, closest hit all eight") {
 		Scene scene;
 		uint32_t white = add_material(scene, diffuse_material(Spectrum{0.5f}), "white");
@@ -111,10 +111,10 @@ TEST_CASE("BVH::occluded agrees with hit() and stops at the first hit", "[framew
 		Ray ray(Vec3{-5.0f, 0.1f, 0.2f}, Vec3{1.0f, 0.0f, 0.0f});
 
 		ray_counters().instance_tests = 0;
-		REQUIRE(scene.bvh.occluded(ray));
+		REQUIRE(scene.occluded(ray));
 		CHECK(ray_counters().instance_tests == 1);
 		ray_counters().instance_tests = 0;
-		REQUIRE(scene.bvh.hit(ray).hit);
+		REQUIRE(scene.hit(ray).hit);
 		CHECK(ray_counters().instance_tests == 8);
 	}
 	SECTION("random segments through random triangles") {
@@ -126,14 +126,14 @@ TEST_CASE("BVH::occluded agrees with hit() and stops at the first hit", "[framew
 			Vec3 centre = point(), normal = glm::normalize(point());
 			triangles.push_back(Triangle{{centre, normal}, {centre + 0.4f * point(), normal}, {centre + 0.4f * point(), normal}});
 		}
-		BVH<Triangle> bvh(std::move(triangles), 4);
+		Tri_Mesh mesh(std::move(triangles), 4);
 		size_t blocked = 0;
 		for (int i = 0; i < 20000; i++) {
 			Ray ray(2.0f * point(), glm::normalize(point()), Vec2{0.0f, length(random)});
-			bool closest = bvh.hit(ray).hit;
+			bool closest = mesh.hit(ray).hit;
 			blocked += closest;
 			INFO("ray " << i);
-			REQUIRE(bvh.occluded(ray) == closest);
+			REQUIRE(mesh.accelerator.occluded(mesh.bvh, ray) == closest);
 		}
 		CHECK(blocked > 2000); // both answers are common
 		CHECK(blocked < 18000);
