@@ -1,5 +1,5 @@
 #include "material.h"
-#include "lifecycle.h"
+#include "render_observer.h"
 
 #include <type_traits>
 
@@ -10,50 +10,33 @@ template<typename T> constexpr bool is_discrete_v =
 	std::is_same_v<T, BSDF_Mirror> || std::is_same_v<T, BSDF_Glass>;
 } // namespace
 
-namespace {
-const char* bsdf_name(const BSDF_Variant& bsdf) {
-	constexpr const char* names[] = {"lambertian", "mirror", "glass"};
-	return names[bsdf.index()];
-}
-} // namespace
-
 Scatter BSDF::scatter(RNG& rng, Vec3 out_dir) const {
-	Scatter s = std::visit([&](const auto& b) { return b.scatter(rng, out_dir); }, bsdf);
-	if (auto recorder = Lifecycle_Recorder::active()) {
-		recorder->event(std::string("BSDF sample (") + bsdf_name(bsdf) + ", " +
-		                (is_discrete() ? "discrete" : "continuous") + "): out_dir (local) " + format_vec(out_dir) +
-		                " -> in_dir (local) " + format_vec(s.direction) + ", attenuation " +
-		                format_vec(s.attenuation));
-	}
-	return s;
+	return observe(BSDF_Sampled{*this, out_dir},
+	               [&] { return std::visit([&](const auto& b) { return b.scatter(rng, out_dir); }, bsdf); });
 }
 
 Spectrum BSDF::evaluate(Vec3 out_dir, Vec3 in_dir) const {
-	Spectrum f = std::visit(
-		[&](const auto& b) -> Spectrum {
-			using T = std::decay_t<decltype(b)>;
-			if constexpr (is_continuous<T>) return b.evaluate(out_dir, in_dir);
-			else return Spectrum{0.0f};
-		},
-		bsdf);
-	if (auto recorder = Lifecycle_Recorder::active()) {
-		recorder->event("BSDF evaluate(out, in " + format_vec(in_dir) + ") = " + format_vec(f));
-	}
-	return f;
+	return observe(BSDF_Evaluated{*this, out_dir, in_dir}, [&] {
+		return std::visit(
+			[&](const auto& b) -> Spectrum {
+				using T = std::decay_t<decltype(b)>;
+				if constexpr (is_continuous<T>) return b.evaluate(out_dir, in_dir);
+				else return Spectrum{0.0f};
+			},
+			bsdf);
+	});
 }
 
 float BSDF::pdf(Vec3 out_dir, Vec3 in_dir) const {
-	float p = std::visit(
-		[&](const auto& b) -> float {
-			using T = std::decay_t<decltype(b)>;
-			if constexpr (is_continuous<T>) return b.pdf(out_dir, in_dir);
-			else return 0.0f;
-		},
-		bsdf);
-	if (auto recorder = Lifecycle_Recorder::active()) {
-		recorder->event("BSDF pdf(out, in " + format_vec(in_dir) + ") = " + std::to_string(p));
-	}
-	return p;
+	return observe(BSDF_Pdf{*this, out_dir, in_dir}, [&] {
+		return std::visit(
+			[&](const auto& b) -> float {
+				using T = std::decay_t<decltype(b)>;
+				if constexpr (is_continuous<T>) return b.pdf(out_dir, in_dir);
+				else return 0.0f;
+			},
+			bsdf);
+	});
 }
 
 bool BSDF::is_discrete() const {
@@ -84,7 +67,5 @@ Spectrum BSDF::albedo() const {
 }
 
 Spectrum Material::emitted(Vec3 out_dir) const {
-	Spectrum e = out_dir.y > 0.0f ? emission : Spectrum{0.0f};
-	if (auto recorder = Lifecycle_Recorder::active()) recorder->emitted(e);
-	return e;
+	return observe(Emitted{out_dir}, [&] { return out_dir.y > 0.0f ? emission : Spectrum{0.0f}; });
 }

@@ -2,6 +2,7 @@
 // (§3.3), measured against an independent binned-SAH builder and an ideal traversal.
 #include "bvh_oracle.h"
 #include "bvh_test_scenes.h"
+#include "call_counter.h"
 #include "obj_loader.h"
 
 #include <catch2/catch.hpp>
@@ -41,9 +42,9 @@ void check_sah_cost(const std::string& scene, const std::vector<Triangle>& trian
 
 // Counts Instance::hit calls (framework-counted) made by `trace_all`.
 template<typename F> uint64_t instance_tests(F&& trace_all) {
-	uint64_t before = ray_counters().instance_tests;
+	Call_Counter calls;
 	trace_all();
-	return ray_counters().instance_tests - before;
+	return calls.instance_tests;
 }
 
 void check_primitive_tests(const std::string& scene, std::vector<Instance> instances, const std::vector<Ray>& rays) {
