@@ -22,7 +22,8 @@ set(LAB_TASK_FILES
 	task7_env_light.cpp)
 
 # The instructors' repository has the reference sources; a student release (./lab export) has
-# prebuilt/libtask<N>_reference.a instead.
+# prebuilt/libtask<N>_reference.a instead, and prebuilt/libaccelerator_fast.a for the framework's
+# fast accelerator, whose source (framework/accel/fast/) it does not ship either.
 if(EXISTS ${PROJECT_SOURCE_DIR}/reference)
 	set(LAB_REFERENCE_SOURCES ON)
 elseif(EXISTS ${PROJECT_SOURCE_DIR}/prebuilt)
@@ -31,18 +32,29 @@ else()
 	message(FATAL_ERROR "neither reference/ nor prebuilt/ is present: the other tasks cannot be linked")
 endif()
 
-# lab_prebuilt_reference(<n>): task<n>_reference from the shipped archive, linked whole (like the
-# object library it replaces), since the framework calls into it and it calls into the framework.
-function(lab_prebuilt_reference n)
-	set(archive ${PROJECT_SOURCE_DIR}/prebuilt/libtask${n}_reference.a)
+# lab_library(<name> <source>...): for code a student release ships compiled. In the instructors'
+# repository, the object library <name> of the sources, and the archive prebuilt/lib<name>.a that
+# ./lab export ships in its place (built only on request). In a student release, <name> is that
+# archive, linked whole (like the object library it replaces), since the framework calls into it
+# and it calls into the framework.
+function(lab_library name)
+	if(LAB_REFERENCE_SOURCES)
+		add_library(${name} OBJECT ${ARGN})
+		target_link_libraries(${name} PUBLIC framework_headers)
+		lab_defaults(${name})
+		add_library(${name}_archive STATIC EXCLUDE_FROM_ALL $<TARGET_OBJECTS:${name}>)
+		set_target_properties(${name}_archive PROPERTIES
+			OUTPUT_NAME ${name} ARCHIVE_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/prebuilt)
+		return()
+	endif()
+	set(archive ${PROJECT_SOURCE_DIR}/prebuilt/lib${name}.a)
 	if(NOT EXISTS ${archive})
 		message(FATAL_ERROR "missing ${archive}: re-export the student release (./lab export)")
 	endif()
-	add_library(task${n}_reference_archive STATIC IMPORTED)
-	set_target_properties(task${n}_reference_archive PROPERTIES IMPORTED_LOCATION ${archive})
-	add_library(task${n}_reference INTERFACE)
-	target_link_libraries(task${n}_reference INTERFACE
-		framework_headers "$<LINK_LIBRARY:WHOLE_ARCHIVE,task${n}_reference_archive>")
+	add_library(${name}_archive STATIC IMPORTED)
+	set_target_properties(${name}_archive PROPERTIES IMPORTED_LOCATION ${archive})
+	add_library(${name} INTERFACE)
+	target_link_libraries(${name} INTERFACE framework_headers "$<LINK_LIBRARY:WHOLE_ARCHIVE,${name}_archive>")
 endfunction()
 
 # lab_link_tasks(<target> <impl> [TASK<n> <impl_n>]...): link task <n> from <impl_n> where one is

@@ -11,32 +11,33 @@ template<typename T> constexpr bool is_discrete_v =
 } // namespace
 
 Scatter BSDF::scatter(RNG& rng, Vec3 out_dir) const {
-	return observe(BSDF_Sampled{*this, out_dir},
-	               [&] { return std::visit([&](const auto& b) { return b.scatter(rng, out_dir); }, bsdf); });
+	Scatter s = std::visit([&](const auto& b) { return b.scatter(rng, out_dir); }, bsdf);
+	report<BSDF_Sampled>(s, *this, out_dir);
+	return s;
 }
 
 Spectrum BSDF::evaluate(Vec3 out_dir, Vec3 in_dir) const {
-	return observe(BSDF_Evaluated{*this, out_dir, in_dir}, [&] {
-		return std::visit(
-			[&](const auto& b) -> Spectrum {
-				using T = std::decay_t<decltype(b)>;
-				if constexpr (is_continuous<T>) return b.evaluate(out_dir, in_dir);
-				else return Spectrum{0.0f};
-			},
-			bsdf);
-	});
+	Spectrum f = std::visit(
+		[&](const auto& b) -> Spectrum {
+			using T = std::decay_t<decltype(b)>;
+			if constexpr (is_continuous<T>) return b.evaluate(out_dir, in_dir);
+			else return Spectrum{0.0f};
+		},
+		bsdf);
+	report<BSDF_Evaluated>(f, *this, out_dir, in_dir);
+	return f;
 }
 
 float BSDF::pdf(Vec3 out_dir, Vec3 in_dir) const {
-	return observe(BSDF_Pdf{*this, out_dir, in_dir}, [&] {
-		return std::visit(
-			[&](const auto& b) -> float {
-				using T = std::decay_t<decltype(b)>;
-				if constexpr (is_continuous<T>) return b.pdf(out_dir, in_dir);
-				else return 0.0f;
-			},
-			bsdf);
-	});
+	float p = std::visit(
+		[&](const auto& b) -> float {
+			using T = std::decay_t<decltype(b)>;
+			if constexpr (is_continuous<T>) return b.pdf(out_dir, in_dir);
+			else return 0.0f;
+		},
+		bsdf);
+	report<BSDF_Pdf>(p, *this, out_dir, in_dir);
+	return p;
 }
 
 bool BSDF::is_discrete() const {
@@ -67,5 +68,7 @@ Spectrum BSDF::albedo() const {
 }
 
 Spectrum Material::emitted(Vec3 out_dir) const {
-	return observe(Emitted{out_dir}, [&] { return out_dir.y > 0.0f ? emission : Spectrum{0.0f}; });
+	Spectrum e = out_dir.y > 0.0f ? emission : Spectrum{0.0f};
+	report<Emitted>(e, out_dir);
+	return e;
 }

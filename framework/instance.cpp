@@ -20,17 +20,17 @@ Instance::Instance(std::variant<Sphere, Tri_Mesh> shape_, Mat4 to_world_, uint32
 }
 
 Trace Instance::hit(const Ray& ray) const {
-	return observe(Instance_Tested{*this, ray}, [&] {
-		// An affine map keeps the ray parameter: to_local(o + t d) = to_local(o) + t * A d.
-		Ray local(transform_point(to_local, ray.point), transform_direction(to_local, ray.dir), ray.dist_bounds,
-		          ray.depth);
-		Trace trace = std::visit([&](const auto& s) { return s.hit(local); }, shape);
-		if (!trace.hit) return trace;
+	// An affine map keeps the ray parameter: to_local(o + t d) = to_local(o) + t * A d.
+	Ray local(transform_point(to_local, ray.point), transform_direction(to_local, ray.dir), ray.dist_bounds,
+	          ray.depth);
+	Trace trace = std::visit([&](const auto& s) { return s.hit(local); }, shape);
+	if (trace.hit) {
 		trace.origin = ray.point;
 		trace.position = ray.at(trace.distance);
 		trace.normal = glm::normalize(normal_to_world * trace.normal);
 		trace.object = index;
 		trace.material = material;
-		return trace;
-	});
+	}
+	report<Instance_Tested>(trace, *this, ray);
+	return trace;
 }

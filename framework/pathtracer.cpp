@@ -48,11 +48,13 @@ Pathtracer::Pathtracer(const Scene& scene_, Render_Settings settings_, View view
 }
 
 Spectrum Pathtracer::trace(RNG& rng, const Ray& ray) const {
-	return observe(Ray_Traced{ray}, [&] {
-		if (view != View::path) return debug_view(ray);
-		Trace hit = observe(Closest_Hit{ray}, [&] { return scene.hit(ray); });
-		return hit.hit ? shade(rng, ray, hit) : scene.environment_radiance(ray.dir);
-	});
+	return observe<Ray_Traced>(
+		[&] {
+			if (view != View::path) return debug_view(ray);
+			Trace hit = observe<Closest_Hit>([&] { return scene.hit(ray); }, ray);
+			return hit.hit ? shade(rng, ray, hit) : scene.environment_radiance(ray.dir);
+		},
+		ray);
 }
 
 Spectrum Pathtracer::eye_light(const Ray& ray, const Trace& hit) const {
@@ -95,20 +97,25 @@ Vec3 Pathtracer::sample_area_lights(RNG& rng, Vec3 from) const {
 		throw std::logic_error("sample_area_lights: this scene has no lights; check has_lights() before "
 		                       "sampling them (handout §6.2)");
 	}
-	return observe(Light_Sampled{from}, [&] {
-		uint32_t i = rng.integer(uint32_t(light_count(scene)));
-		if (i < scene.area_lights.count()) return Light_Sample{scene.area_lights.sample(i, rng, from), i, false};
-		Vec2 u = rng.unit2();
-		return Light_Sample{std::visit([&](const auto& env) { return env.sample(u); }, *scene.environment), i, true};
-	}).direction;
+	return observe<Light_Sampled>(
+		[&] {
+			uint32_t i = rng.integer(uint32_t(light_count(scene)));
+			if (i < scene.area_lights.count()) return Light_Sample{scene.area_lights.sample(i, rng, from), i, false};
+			Vec2 u = rng.unit2();
+			return Light_Sample{std::visit([&](const auto& env) { return env.sample(u); }, *scene.environment), i, true};
+		},
+		from)
+		.direction;
 }
 
 float Pathtracer::area_lights_pdf(Vec3 from, Vec3 dir) const {
 	if (!has_lights()) return 0.0f; // no light can produce any direction
-	return observe(Light_Pdf{from, dir}, [&] {
-		float pdf = 0.0f;
-		for (size_t i = 0; i < scene.area_lights.count(); i++) pdf += scene.area_lights.pdf(i, from, dir);
-		if (scene.environment) pdf += std::visit([&](const auto& env) { return env.pdf(dir); }, *scene.environment);
-		return pdf / float(light_count(scene));
-	});
+	return observe<Light_Pdf>(
+		[&] {
+			float pdf = 0.0f;
+			for (size_t i = 0; i < scene.area_lights.count(); i++) pdf += scene.area_lights.pdf(i, from, dir);
+			if (scene.environment) pdf += std::visit([&](const auto& env) { return env.pdf(dir); }, *scene.environment);
+			return pdf / float(light_count(scene));
+		},
+		from, dir);
 }

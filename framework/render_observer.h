@@ -1,23 +1,26 @@
 #pragma once
 // The render observer: what a render does, told as it happens to one observer per thread (the ray
 // recorder of --follow-pixel, lifecycle.h; bench/'s time profile; tests' counters). Each site in the
-// framework makes one call, observe(event, work): it does the work and returns its result, and while
-// an observer is active on the thread, tells it begin(event) before the work and end(event, result)
-// after. Off (the usual case), a site costs one thread-local load and a branch.
+// framework makes one call: observe<Event>(work, inputs...) around work that observers time or nest
+// in (begin(event) before it, end(event, result) after), report<Event>(result, inputs...) after
+// work they only need the result of (end(event, result)); the event is made of the site's inputs,
+// and only while an observer is active on the thread. Off (the usual case), a site costs a
+// thread-local load and a branch or two.
 #include "material.h"
 #include "ray.h"
 #include "trace.h"
 
 struct Instance;
 
-// The events, one per site, with the site's inputs; the comment names the result end() receives.
-struct Ray_Traced { // Pathtracer::trace: the radiance (Spectrum)
+// The events, one per site, with the site's inputs; the comment names the result end() receives and
+// the call that reports it.
+struct Ray_Traced { // Pathtracer::trace (observe): the radiance (Spectrum)
 	const Ray& ray;
 };
-struct Closest_Hit { // the scene's closest hit in Pathtracer::trace (view path): the Trace
+struct Closest_Hit { // the scene's closest hit in Pathtracer::trace, view path (observe): the Trace
 	const Ray& ray;
 };
-struct Light_Sampled { // Pathtracer::sample_area_lights: a Light_Sample
+struct Light_Sampled { // Pathtracer::sample_area_lights (observe): a Light_Sample
 	Vec3 from;
 };
 struct Light_Sample {
@@ -25,25 +28,25 @@ struct Light_Sample {
 	uint32_t light;   // the light chosen: an area light's index, or the environment's
 	bool environment; // whether it is the environment
 };
-struct Light_Pdf { // Pathtracer::area_lights_pdf: the density (float)
+struct Light_Pdf { // Pathtracer::area_lights_pdf (observe): the density (float)
 	Vec3 from, dir;
 };
-struct BSDF_Sampled { // BSDF::scatter: the Scatter
+struct BSDF_Sampled { // BSDF::scatter (report): the Scatter
 	const BSDF& bsdf;
 	Vec3 out_dir;
 };
-struct BSDF_Evaluated { // BSDF::evaluate: the value (Spectrum)
+struct BSDF_Evaluated { // BSDF::evaluate (report): the value (Spectrum)
 	const BSDF& bsdf;
 	Vec3 out_dir, in_dir;
 };
-struct BSDF_Pdf { // BSDF::pdf: the density (float)
+struct BSDF_Pdf { // BSDF::pdf (report): the density (float)
 	const BSDF& bsdf;
 	Vec3 out_dir, in_dir;
 };
-struct Emitted { // Material::emitted: the emitted radiance (Spectrum)
+struct Emitted { // Material::emitted (report): the emitted radiance (Spectrum)
 	Vec3 out_dir;
 };
-struct Instance_Tested { // Instance::hit: the Trace
+struct Instance_Tested { // Instance::hit (report): the Trace
 	const Instance& instance;
 	const Ray& ray;
 };
@@ -74,15 +77,10 @@ public:
 	virtual void end(const Light_Sampled&, const Light_Sample&) {}
 	virtual void begin(const Light_Pdf&) {}
 	virtual void end(const Light_Pdf&, float) {}
-	virtual void begin(const BSDF_Sampled&) {}
 	virtual void end(const BSDF_Sampled&, const Scatter&) {}
-	virtual void begin(const BSDF_Evaluated&) {}
 	virtual void end(const BSDF_Evaluated&, Spectrum) {}
-	virtual void begin(const BSDF_Pdf&) {}
 	virtual void end(const BSDF_Pdf&, float) {}
-	virtual void begin(const Emitted&) {}
 	virtual void end(const Emitted&, Spectrum) {}
-	virtual void begin(const Instance_Tested&) {}
 	virtual void end(const Instance_Tested&, const Trace&) {}
 
 private:
@@ -90,12 +88,37 @@ private:
 	Render_Observer* previous;
 };
 
-// A site: does `work` and returns its result, telling this thread's observer (if any) about it.
-template<typename Event, typename Work> auto observe(const Event& event, Work&& work) {
+// What a site calls when an observer is active: out of line and cold, so that a site's own code is
+// the same as without observers but for the check (the compiler would otherwise inline there the
+// observers' code it guesses will run, and lay it out as if it might).
+template<typename Event> [[gnu::cold, gnu::noinline]] void tell_begin(Render_Observer& observer, const Event& event) {
+	observer.begin(event);
+}
+template<typename Event, typename Result>
+[[gnu::cold, gnu::noinline]] void tell_end(Render_Observer& observer, const Event& event, const Result& result) {
+	observer.end(event, result);
+}
+
+// A site around work: does `work` and returns its result, telling this thread's observer (if any)
+// about it as Event{inputs...}. `work` is called in one place only, so that the compiler inlines it
+// as it would the plain code, and the event is made only for an observer, so that without one the
+// site neither builds it nor keeps its inputs in memory.
+template<typename Event, typename Work, typename... Inputs> auto observe(Work&& work, const Inputs&... inputs) {
 	Render_Observer* observer = Render_Observer::active();
-	if (!observer) return work();
-	observer->begin(event);
+	if (observer) tell_begin(*observer, Event{inputs...});
 	auto result = work();
-	observer->end(event, result);
+	if (observer) {
+		auto copy = result; // (a reference to `result` itself would keep it in memory)
+		tell_end(*observer, Event{inputs...}, copy);
+	}
 	return result;
+}
+
+// A site after work: tells this thread's observer (if any) the work's result as Event{inputs...}.
+template<typename Event, typename Result, typename... Inputs> void report(const Result& result, const Inputs&... inputs) {
+	Render_Observer* observer = Render_Observer::active();
+	if (observer) {
+		Result copy = result; // (as in observe)
+		tell_end(*observer, Event{inputs...}, copy);
+	}
 }

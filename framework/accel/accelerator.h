@@ -2,7 +2,7 @@
 // How the framework queries a finished BVH (Tri_Mesh::hit, Scene::hit): the closest hit, and
 // whether anything is hit (an occlusion query). A program links one of two implementations, chosen
 // with its tasks (cmake/lab.cmake, lab_link_tasks):
-// - where tasks 2 and 3 are both the reference, the fast one (wide_bvh.h): it folds the finished
+// - where tasks 2 and 3 are both the reference, the fast one (fast/wide_bvh.h): it folds the finished
 //   tree into wide nodes and packs a mesh's triangles, finds the closest (triangle, t), and lets
 //   Triangle::hit make the record of that triangle;
 // - otherwise the plain one (plain_accelerator.cpp): BVH::hit, so that a student's BBox::hit,
@@ -12,7 +12,7 @@
 
 #include <memory>
 
-struct Wide_BVH; // the fast implementation's data (wide_bvh.h)
+struct Wide_BVH; // the fast implementation's data (fast/wide_bvh.h)
 
 template<typename Primitive> class Accelerator {
 public:

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The student release (./lab export) in a temporary folder: it must hold no reference source, and
-# its task-1 grader must build from the prebuilt reference and fail on the shipped stub.
+# The student release (./lab export) in a temporary folder: it must hold no reference source (nor the
+# framework's fast accelerator's), and its task-1 grader must build from the prebuilt reference with
+# the release's presets and fail on the shipped stub.
 #
 # usage: test_export.sh REPOSITORY_ROOT
 set -euo pipefail
@@ -19,6 +20,8 @@ release=$tmp/release
 for n in 1 2 3 4 5 6 7; do
 	[ -f "$release/prebuilt/libtask${n}_reference.a" ] || fail "prebuilt/libtask${n}_reference.a is missing"
 done
+[ ! -e "$release/framework/accel/fast" ] || fail "the release has the fast accelerator's source, framework/accel/fast/"
+[ -f "$release/prebuilt/libaccelerator_fast.a" ] || fail "prebuilt/libaccelerator_fast.a is missing"
 # Code lines (not comments) of reference/ long enough to be distinctive, absent from the stubs and
 # not quoted on purpose by a handout. A single line can recur by coincidence (a test oracle does
 # the same thing); three in one file mean copied code.
@@ -42,12 +45,12 @@ done < <(grep -rIcF -f "$patterns" "$release" | grep -v ':0$' || true)
 echo "export test: no file of the release has 3 of the $checked distinctive reference lines"
 
 # The student's view: configure, build the task-1 grader (and the grade report's tool), run ctest -L task1.
-cmake -S "$release" -B "$release/build" -G Ninja -DCMAKE_BUILD_TYPE=Release >"$tmp/configure.log" 2>&1 ||
+cmake -S "$release" --preset release -B "$release/build" >"$tmp/configure.log" 2>&1 ||
 	{ cat "$tmp/configure.log" >&2; fail "the release does not configure"; }
 cmake --build "$release/build" --parallel 2 --target grader_task1_student grade_report >"$tmp/build.log" 2>&1 ||
 	{ tail -40 "$tmp/build.log" >&2; fail "grader_task1_student or grade_report does not build in the release"; }
 status=0
-(cd "$release/build" && ctest --no-tests=error --output-on-failure -L task1) >"$tmp/ctest.log" 2>&1 || status=$?
+(cd "$release" && ctest --preset lab --test-dir "$release/build" -L task1) >"$tmp/ctest.log" 2>&1 || status=$?
 cat "$tmp/ctest.log" | tail -15
 [ "$status" -ne 0 ] || fail "ctest -L task1 passed on the shipped stub"
 grep -q "tests failed out of 1$" "$tmp/ctest.log" || fail "ctest -L task1 did not run exactly one test"

@@ -1,12 +1,14 @@
-// The fast accelerator (accelerator.h): the queries of a finished BVH traverse its Wide_BVH
+// The fast accelerator (accel/accelerator.h): the queries of a finished BVH traverse its Wide_BVH
 // (wide_bvh.h). Linked only where tasks 2 and 3 are both the reference (cmake/lab.cmake).
-#include "accelerator.h"
+#include "accel/accelerator.h"
 #include "four_wide_tests.h"
 #include "instance.h"
 #include "tri_mesh.h"
 
+#include <algorithm>
 #include <iterator>
 #include <type_traits>
+#include <utility>
 
 using namespace four_wide;
 
