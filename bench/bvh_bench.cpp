@@ -214,13 +214,15 @@ int main(int argc, char** argv) {
 	// The comparison: closest hits against Embree making the same record, occlusion against rtcOccluded1.
 	auto embree_like = [](int s) { return s < 2 ? "embree record" : "embree"; };
 	std::printf("Mrays/s; Embree: closest hit with BVH::hit's record (the hit point, the vertex normals interpolated at\n"
-	            "its u, v), occlusion rtcOccluded1; task 3: BVH::hit alone (occlusion: its closest hit on the segment)\n");
-	std::printf("%-11s %45s   %45s   %s\n", "", "1 thread: ours  task 3  Embree  ratios to Embree",
-	            "all cores: ours  task 3  Embree  ratios to Embree", "results differing");
+	            "its u, v), occlusion rtcOccluded1; task 3: BVH::hit alone (occlusion: its closest hit on the segment);\n"
+	            "ratios to Embree: ours / Embree (ours/E) and task 3 / Embree (t3/E)\n");
+	std::printf("%-11s %-40s   %-40s\n", "", "1 thread (CPU time)", "all cores (wall time)");
+	std::printf("%-11s %8s %7s %7s %7s %6s   %8s %7s %7s %7s %6s   %s\n", "", "ours", "task 3", "Embree", "ours/E",
+	            "t3/E", "ours", "task 3", "Embree", "ours/E", "t3/E", "results differing");
 	for (int s = 0; s < 3; s++) {
 		const Measurement &a = result(s, "ours"), &t = result(s, "task3"), &e = result(s, embree_like(s));
 		size_t differ = count_differences(a.results, e.results);
-		std::printf("%-11s %14.2f %7.2f %7.2f %7.2f %6.2f   %15.2f %7.2f %7.2f %7.2f %6.2f   %zu of %zu\n", names[s],
+		std::printf("%-11s %8.2f %7.2f %7.2f %7.2f %6.2f   %8.2f %7.2f %7.2f %7.2f %6.2f   %zu of %zu\n", names[s],
 		            median(a.single), median(t.single), median(e.single), median_ratio(a.single, e.single),
 		            median_ratio(t.single, e.single), median(a.all), median(t.all), median(e.all),
 		            median_ratio(a.all, e.all), median_ratio(t.all, e.all), differ, sets[s]->size());
@@ -233,7 +235,7 @@ int main(int argc, char** argv) {
 			status = 1;
 		}
 	}
-	std::printf("(ratios: median over the repeats of ours / Embree within a repeat; 1 thread in CPU time)\n");
+	std::printf("(ratios: median over the repeats of the ratio within a repeat)\n");
 	std::printf("for information, Embree's rtcIntersect1 alone (t, u, v and the triangle, no record), 1 thread:");
 	for (int s = 0; s < 2; s++) {
 		const Measurement &a = result(s, "ours"), &e = result(s, "embree");
