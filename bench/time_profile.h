@@ -23,25 +23,25 @@ public:
 	Calls closest_hits, light_samples, light_pdfs;
 
 private:
-	static void begin(Calls& calls);
-	static void end(Calls& calls);
+	static void started(Calls& calls);
+	static void finished(Calls& calls);
 
 	void begin(const Closest_Hit&) override {
-		begin(closest_hits);
+		started(closest_hits);
 	}
 	void end(const Closest_Hit&, const Trace&) override {
-		end(closest_hits);
+		finished(closest_hits);
 	}
 	void begin(const Light_Sampled&) override {
-		begin(light_samples);
+		started(light_samples);
 	}
 	void end(const Light_Sampled&, const Light_Sample&) override {
-		end(light_samples);
+		finished(light_samples);
 	}
 	void begin(const Light_Pdf&) override {
-		begin(light_pdfs);
+		started(light_pdfs);
 	}
 	void end(const Light_Pdf&, float) override {
-		end(light_pdfs);
+		finished(light_pdfs);
 	}
 };
