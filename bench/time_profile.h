@@ -14,6 +14,9 @@ public:
 	using Clock = std::chrono::steady_clock;
 	static constexpr uint64_t TIMED_EVERY = 8;
 
+	Time_Profile() : Render_Observer(false) { // the observe() sites only
+	}
+
 	// The calls of one kind, and the time spent in them.
 	struct Calls {
 		uint64_t count = 0;

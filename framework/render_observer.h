@@ -54,8 +54,9 @@ struct Instance_Tested { // Instance::hit (report): the Trace
 class Render_Observer {
 public:
 	// Makes this observer the current thread's until it is destroyed; the one it replaced (if any)
-	// is the current one again then.
-	Render_Observer() : previous(current) {
+	// is the current one again then. `reports`: whether it wants the events of report() sites
+	// (BSDF calls, emission, instance tests: many per path), or only those of observe() sites.
+	explicit Render_Observer(bool reports = true) : reports(reports), previous(current) {
 		current = this;
 	}
 	virtual ~Render_Observer() {
@@ -83,19 +84,21 @@ public:
 	virtual void end(const Emitted&, Spectrum) {}
 	virtual void end(const Instance_Tested&, const Trace&) {}
 
+	const bool reports;
+
 private:
 	static inline thread_local Render_Observer* current = nullptr;
 	Render_Observer* previous;
 };
 
-// What a site calls when an observer is active: out of line and cold, so that a site's own code is
-// the same as without observers but for the check (the compiler would otherwise inline there the
-// observers' code it guesses will run, and lay it out as if it might).
-template<typename Event> [[gnu::cold, gnu::noinline]] void tell_begin(Render_Observer& observer, const Event& event) {
+// What a site calls when an observer is active: out of line, so that a site's own code is the same
+// as without observers but for the check (the compiler would otherwise inline there the observers'
+// code it guesses will run).
+template<typename Event> [[gnu::noinline]] void tell_begin(Render_Observer& observer, const Event& event) {
 	observer.begin(event);
 }
 template<typename Event, typename Result>
-[[gnu::cold, gnu::noinline]] void tell_end(Render_Observer& observer, const Event& event, const Result& result) {
+[[gnu::noinline]] void tell_end(Render_Observer& observer, const Event& event, const Result& result) {
 	observer.end(event, result);
 }
 
@@ -105,9 +108,9 @@ template<typename Event, typename Result>
 // site neither builds it nor keeps its inputs in memory.
 template<typename Event, typename Work, typename... Inputs> auto observe(Work&& work, const Inputs&... inputs) {
 	Render_Observer* observer = Render_Observer::active();
-	if (observer) tell_begin(*observer, Event{inputs...});
+	if (__builtin_expect(observer != nullptr, false)) tell_begin(*observer, Event{inputs...});
 	auto result = work();
-	if (observer) {
+	if (__builtin_expect(observer != nullptr, false)) {
 		auto copy = result; // (a reference to `result` itself would keep it in memory)
 		tell_end(*observer, Event{inputs...}, copy);
 	}
@@ -117,7 +120,7 @@ template<typename Event, typename Work, typename... Inputs> auto observe(Work&& 
 // A site after work: tells this thread's observer (if any) the work's result as Event{inputs...}.
 template<typename Event, typename Result, typename... Inputs> void report(const Result& result, const Inputs&... inputs) {
 	Render_Observer* observer = Render_Observer::active();
-	if (observer) {
+	if (__builtin_expect(observer != nullptr, false) && observer->reports) {
 		Result copy = result; // (as in observe)
 		tell_end(*observer, Event{inputs...}, copy);
 	}
