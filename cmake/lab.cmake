@@ -24,9 +24,14 @@ set(LAB_TASK_FILES
 # The instructors' repository has the reference sources; a student release (./lab export) has
 # prebuilt/libtask<N>_reference.a instead, and prebuilt/libaccelerator_fast.a for the framework's
 # fast accelerator, whose source (framework/accel/fast/) it does not ship either.
-if(EXISTS ${PROJECT_SOURCE_DIR}/reference)
+# LAB_ROOT: the repository's root (the project's source folder unless a project inside the
+# repository, as tests/fuzz, sets it).
+if(NOT DEFINED LAB_ROOT)
+	set(LAB_ROOT ${PROJECT_SOURCE_DIR})
+endif()
+if(EXISTS ${LAB_ROOT}/reference)
 	set(LAB_REFERENCE_SOURCES ON)
-elseif(EXISTS ${PROJECT_SOURCE_DIR}/prebuilt)
+elseif(EXISTS ${LAB_ROOT}/prebuilt)
 	set(LAB_REFERENCE_SOURCES OFF)
 else()
 	message(FATAL_ERROR "neither reference/ nor prebuilt/ is present: the other tasks cannot be linked")
@@ -47,7 +52,7 @@ function(lab_library name)
 			OUTPUT_NAME ${name} ARCHIVE_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/prebuilt)
 		return()
 	endif()
-	set(archive ${PROJECT_SOURCE_DIR}/prebuilt/lib${name}.a)
+	set(archive ${LAB_ROOT}/prebuilt/lib${name}.a)
 	if(NOT EXISTS ${archive})
 		message(FATAL_ERROR "missing ${archive}: re-export the student release (./lab export)")
 	endif()
