@@ -12,9 +12,7 @@ double sah_cost(const BVH<Triangle>& bvh) {
 }
 
 size_t bvh_bytes(const BVH<Triangle>& bvh) {
-	return bvh.nodes.capacity() * sizeof(bvh.nodes[0]) + bvh.primitives.capacity() * sizeof(Triangle) +
-	       bvh.wide_nodes.capacity() * sizeof(bvh.wide_nodes[0]) +
-	       bvh.triangle_packs.capacity() * sizeof(bvh.triangle_packs[0]);
+	return bvh.nodes.capacity() * sizeof(bvh.nodes[0]) + bvh.primitives.capacity() * sizeof(Triangle);
 }
 
 Visit_Counts visit_counts(const BVH<Triangle>& bvh, const std::vector<Ray>& rays, const std::vector<float>& hits) {

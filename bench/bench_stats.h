@@ -9,7 +9,7 @@
 // root's box).
 double sah_cost(const BVH<Triangle>& bvh);
 
-// Bytes held by the BVH: nodes, triangles and any traversal data that build() fills.
+// Bytes held by the BVH: its nodes and triangles (the accelerator's own: Accelerator::bytes).
 size_t bvh_bytes(const BVH<Triangle>& bvh);
 
 struct Visit_Counts {

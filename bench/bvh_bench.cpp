@@ -1,12 +1,14 @@
-// The BVH benchmark: builds the reference BVH<Triangle> over an OBJ or a scene's meshes and measures
-// build time, memory, SAH cost, node visits and Mrays/s for primary, incoherent closest-hit and
-// occlusion rays, on one thread and on all cores; with Embree, the same for Embree on the same rays,
-// and the ratios (and, for information, Embree making the record BVH::hit makes).
+// The BVH benchmark: builds the reference BVH<Triangle> (task 3's model solution) over an OBJ or a
+// scene's meshes, and the framework's fast accelerator from it, and measures build time, memory, SAH
+// cost, node visits and Mrays/s for primary, incoherent closest-hit and occlusion rays, on one thread
+// and on all cores: the accelerator's queries, and task 3's BVH::hit alone. With Embree, the same for
+// Embree on the same rays (rtcIntersect1, and making the record BVH::hit makes), and the ratios.
 // Usage: bvh_bench [OBJ|SCENE] [--repeats N] [--rays N] [--film WxH]. See README.md.
 #include "bench_geometry.h"
 #include "bench_rays.h"
 #include "bench_stats.h"
 #include "bench_timing.h"
+#include "accel/accelerator.h"
 #ifdef LAB_HAVE_EMBREE
 #include "embree_bvh.h"
 #endif
@@ -45,7 +47,10 @@ Options parse(int argc, char** argv) {
 
 // Hit distances (INF_F for a miss) or occlusion flags (1 or INF_F) of one method on one ray set.
 using Results = std::vector<float>;
-using Method = std::function<float(const Ray&)>;
+struct Method {
+	std::string name;
+	std::function<float(const Ray&)> trace;
+};
 
 struct Measurement {
 	std::vector<double> single, all; // Mrays/s of each repeat, on one thread and on all cores
@@ -63,12 +68,14 @@ std::vector<Measurement> measure(const std::vector<Ray>& rays, const std::vector
 		for (size_t m = 0; m < methods.size(); m++) {
 			Measurement& me = out[m];
 			me.results.resize(rays.size());
-			double single = timed_serial_for(rays.size(), [&](size_t i) { me.results[i] = methods[m](rays[i]); });
-			double all = timed_parallel_for(rays.size(), threads, [&](size_t i) { parallel[i] = methods[m](rays[i]); });
+			double single = timed_serial_for(rays.size(), [&](size_t i) { me.results[i] = methods[m].trace(rays[i]); });
+			double all =
+				timed_parallel_for(rays.size(), threads, [&](size_t i) { parallel[i] = methods[m].trace(rays[i]); });
 			me.single.push_back(rays.size() / single * 1e-6);
 			me.all.push_back(rays.size() / all * 1e-6);
 			if (parallel != me.results)
-				std::printf("ERROR: results on %u threads differ from those on one thread\n", threads);
+				std::printf("ERROR: %s: results on %u threads differ from those on one thread\n",
+				            methods[m].name.c_str(), threads);
 		}
 	return out;
 }
@@ -80,8 +87,6 @@ double median_ratio(const std::vector<double>& a, const std::vector<double>& b) 
 	return median(ratios);
 }
 
-#ifdef LAB_HAVE_EMBREE
-
 // How many results differ: hit against miss, or distances differing by more than 1e-4 relative
 // (Embree's triangle test rounds differently, and ours accepts hits 1e-5 outside an edge).
 size_t count_differences(const Results& a, const Results& b) {
@@ -92,10 +97,22 @@ size_t count_differences(const Results& a, const Results& b) {
 	}
 	return differ;
 }
-#endif
 
 float hit_distance(const Trace& trace) {
 	return trace.hit ? trace.distance : INF_F;
+}
+
+// The measurement of the method named `name`.
+const Measurement& of(const std::vector<Measurement>& results, const std::vector<Method>& methods,
+                      const std::string& name) {
+	for (size_t m = 0; m < methods.size(); m++)
+		if (methods[m].name == name) return results[m];
+	std::printf("ERROR: no method %s\n", name.c_str());
+	std::exit(1);
+}
+
+float blocked(bool hit) {
+	return hit ? 1.0f : INF_F;
 }
 
 } // namespace
@@ -108,28 +125,40 @@ int main(int argc, char** argv) {
 	std::printf("%s: %zu triangles; %d repeats, medians; all cores = %u threads\n", options.path.c_str(), n,
 	            options.repeats, threads);
 
-	// Build (single-threaded, CPU time), as often as the rays are traced.
+	// Build (single-threaded, CPU time), as often as the rays are traced: task 3's tree, then the
+	// framework's accelerator from it.
 	BVH<Triangle> bvh;
-	std::vector<double> builds;
+	Accelerator<Triangle> accelerator;
+	std::vector<double> tree_builds, builds;
 	for (int repeat = 0; repeat < options.repeats; repeat++) {
 		std::vector<Triangle> copy = geometry.triangles;
 		double start = process_cpu_seconds();
 		bvh.build(std::move(copy), 4); // Tri_Mesh's leaf size
+		double tree = process_cpu_seconds();
+		accelerator = Accelerator<Triangle>(bvh);
+		tree_builds.push_back(tree - start);
 		builds.push_back(process_cpu_seconds() - start);
 	}
-	double build = median(builds);
 
 	std::vector<Ray> primary = primary_rays(geometry.camera, options.width, options.height);
 	std::vector<float> primary_hits;
-	for (const Ray& ray : primary) primary_hits.push_back(hit_distance(bvh.hit(ray)));
+	for (const Ray& ray : primary) primary_hits.push_back(hit_distance(accelerator.hit(bvh, ray)));
 	Ray_Sets rays = make_ray_sets(geometry, std::move(primary), primary_hits, options.secondary_rays);
 	const std::vector<Ray>* sets[3] = {&rays.primary, &rays.incoherent, &rays.occlusion};
 	const char* names[3] = {"primary", "incoherent", "occlusion"};
 
-	// Methods per ray set: ours first, then Embree's.
-	std::vector<Method> methods[3];
-	for (int s = 0; s < 2; s++) methods[s].push_back([&](const Ray& ray) { return hit_distance(bvh.hit(ray)); });
-	methods[2].push_back([&](const Ray& ray) { return bvh.occluded(ray) ? 1.0f : INF_F; });
+	// Methods per ray set. "ours" is the accelerator (any hit for occlusion rays), "task3" task 3's
+	// BVH::hit alone (occlusion: the closest hit on the segment); "closest" the accelerator's closest
+	// hit on the occlusion segments, to show what stopping at the first hit buys.
+	auto closest = [&](const Ray& ray) { return hit_distance(accelerator.hit(bvh, ray)); };
+	auto task3 = [&](const Ray& ray) { return hit_distance(bvh.hit(ray)); };
+	std::vector<Method> methods[3] = {
+		{{"ours", closest}, {"task3", task3}},
+		{{"ours", closest}, {"task3", task3}},
+		{{"ours", [&](const Ray& ray) { return blocked(accelerator.occluded(bvh, ray)); }},
+		 {"task3", [&](const Ray& ray) { return blocked(bvh.hit(ray).hit); }},
+		 {"closest", [&](const Ray& ray) { return blocked(accelerator.hit(bvh, ray).hit); }}},
+	};
 #ifdef LAB_HAVE_EMBREE
 	std::vector<double> embree_builds;
 	std::unique_ptr<Embree_BVH> embree;
@@ -138,20 +167,22 @@ int main(int argc, char** argv) {
 		embree = std::make_unique<Embree_BVH>(geometry.triangles);
 		embree_builds.push_back(embree->build_seconds);
 	}
-	double embree_build = median(embree_builds);
-	for (int s = 0; s < 2; s++) methods[s].push_back([&](const Ray& ray) { return embree->closest_hit(ray); });
-	// Not the targets' comparison: Embree making the record that BVH::hit makes.
-	for (int s = 0; s < 2; s++)
-		methods[s].push_back([&](const Ray& ray) { return hit_distance(embree->hit(ray, geometry.triangles)); });
-	methods[2].push_back([&](const Ray& ray) { return embree->occluded(ray) ? 1.0f : INF_F; });
+	// "embree": rtcIntersect1 or rtcOccluded1; "embree record": the record BVH::hit returns, too.
+	for (int s = 0; s < 2; s++) {
+		methods[s].push_back({"embree", [&](const Ray& ray) { return embree->closest_hit(ray); }});
+		methods[s].push_back(
+			{"embree record", [&](const Ray& ray) { return hit_distance(embree->hit(ray, geometry.triangles)); }});
+	}
+	methods[2].push_back({"embree", [&](const Ray& ray) { return blocked(embree->occluded(ray)); }});
 #endif
-	// Last: occlusion by a closest-hit query on the segment, to show what stopping at the first hit buys.
-	methods[2].push_back([&](const Ray& ray) { return bvh.hit(ray).hit ? 1.0f : INF_F; });
 	std::vector<Measurement> results[3];
 	for (int s = 0; s < 3; s++) results[s] = measure(*sets[s], methods[s], threads, options.repeats);
+	auto result = [&](int s, const char* name) -> const Measurement& { return of(results[s], methods[s], name); };
 
-	std::printf("\nreference BVH: build %.0f ms, %.1f bytes/triangle, SAH cost %.2f, %zu nodes\n", build * 1e3,
-	            double(bvh_bytes(bvh)) / n, sah_cost(bvh), bvh.nodes.size());
+	std::printf("\ntask 3's BVH (reference/task3_bvh.cpp): build %.0f ms, %.1f bytes/triangle, SAH cost %.2f, %zu nodes\n",
+	            median(tree_builds) * 1e3, double(bvh_bytes(bvh)) / n, sah_cost(bvh), bvh.nodes.size());
+	std::printf("accelerator (framework/accel/), made from it: %.0f ms more, %.1f bytes/triangle more\n",
+	            (median(builds) - median(tree_builds)) * 1e3, double(accelerator.bytes()) / n);
 	std::printf("per ray, nodes overlapped up to the closest hit (ideal front-to-back) / triangles in their leaves:\n");
 	for (int s = 0; s < 3; s++) {
 		std::vector<float> hits = results[s][0].results; // occlusion: count the whole segment
@@ -161,47 +192,64 @@ int main(int argc, char** argv) {
 	}
 
 	int status = 0;
-	const Measurement &any_hit = results[2].front(), &closest_hit = results[2].back();
-	std::printf("occlusion rays, ours: any hit (BVH::occluded) %.2f Mrays/s, closest hit on the segment %.2f: "
+	for (int s = 0; s < 3; s++) {
+		size_t differ = count_differences(result(s, "task3").results, result(s, "ours").results);
+		if (differ > 0) {
+			std::printf("ERROR: %s rays: task 3's BVH::hit and the accelerator disagree on %zu\n", names[s], differ);
+			status = 1;
+		}
+	}
+	const Measurement &any_hit = result(2, "ours"), &closest_hit = result(2, "closest");
+	std::printf("occlusion rays, ours: any hit %.2f Mrays/s, closest hit on the segment %.2f: "
 	            "stopping at the first hit is %.2fx as fast (1 thread)\n",
 	            median(any_hit.single), median(closest_hit.single), median_ratio(any_hit.single, closest_hit.single));
 	if (any_hit.results != closest_hit.results) {
-		std::printf("ERROR: BVH::occluded and BVH::hit disagree on whether an occlusion ray is blocked\n");
+		std::printf("ERROR: the accelerator's any hit and closest hit disagree on whether an occlusion ray is blocked\n");
 		status = 1;
 	}
 #ifdef LAB_HAVE_EMBREE
 	std::printf("Embree (RTC_BUILD_QUALITY_HIGH, 1 build thread): build %.0f ms, %.1f bytes/triangle\n",
-	            embree_build * 1e3, double(embree->bytes) / n);
-	std::printf("build time ours / Embree: %.2f\n\n", median_ratio(builds, embree_builds));
-	std::printf("%-11s %28s   %28s   %s\n", "Mrays/s", "1 thread: ours  Embree  ratio", "all cores: ours  Embree  ratio",
-	            "results differing");
+	            median(embree_builds) * 1e3, double(embree->bytes) / n);
+	std::printf("build time ours (tree and accelerator) / Embree: %.2f\n\n", median_ratio(builds, embree_builds));
+	// The comparison: closest hits against Embree making the same record, occlusion against rtcOccluded1.
+	auto embree_like = [](int s) { return s < 2 ? "embree record" : "embree"; };
+	std::printf("Mrays/s; Embree: closest hit with BVH::hit's record (the hit point, the vertex normals interpolated at\n"
+	            "its u, v), occlusion rtcOccluded1; task 3: BVH::hit alone (occlusion: its closest hit on the segment);\n"
+	            "ratios to Embree: ours / Embree (ours/E) and task 3 / Embree (t3/E)\n");
+	std::printf("%-11s %-40s   %-40s\n", "", "1 thread (CPU time)", "all cores (wall time)");
+	std::printf("%-11s %8s %7s %7s %7s %6s   %8s %7s %7s %7s %6s   %s\n", "", "ours", "task 3", "Embree", "ours/E",
+	            "t3/E", "ours", "task 3", "Embree", "ours/E", "t3/E", "results differing");
 	for (int s = 0; s < 3; s++) {
-		const Measurement &a = results[s][0], &b = results[s][1];
-		size_t differ = count_differences(a.results, b.results);
-		std::printf("%-11s %14.2f %7.2f %6.2f   %15.2f %7.2f %6.2f   %zu of %zu\n", names[s], median(a.single),
-		            median(b.single), median_ratio(a.single, b.single), median(a.all), median(b.all),
-		            median_ratio(a.all, b.all), differ, sets[s]->size());
+		const Measurement &a = result(s, "ours"), &t = result(s, "task3"), &e = result(s, embree_like(s));
+		size_t differ = count_differences(a.results, e.results);
+		std::printf("%-11s %8.2f %7.2f %7.2f %7.2f %6.2f   %8.2f %7.2f %7.2f %7.2f %6.2f   %zu of %zu\n", names[s],
+		            median(a.single), median(t.single), median(e.single), median_ratio(a.single, e.single),
+		            median_ratio(t.single, e.single), median(a.all), median(t.all), median(e.all),
+		            median_ratio(a.all, e.all), median_ratio(t.all, e.all), differ, sets[s]->size());
 		if (differ > sets[s]->size() / 1000) {
 			std::printf("ERROR: more than 0.1%% of the %s rays differ between our BVH and Embree\n", names[s]);
 			status = 1;
 		}
-	}
-	std::printf("(ratio: median over the repeats of ours / Embree within a repeat; 1 thread in CPU time)\n");
-	std::printf("Embree making BVH::hit's record too (the hit point, the vertex normals interpolated at its u, v):\n");
-	for (int s = 0; s < 2; s++) {
-		const Measurement &a = results[s][0], &c = results[s][2];
-		std::printf("%-11s %14.2f %7.2f %6.2f   %15.2f %7.2f %6.2f\n", names[s], median(a.single), median(c.single),
-		            median_ratio(a.single, c.single), median(a.all), median(c.all), median_ratio(a.all, c.all));
-		if (c.results != results[s][1].results) {
+		if (s < 2 && e.results != result(s, "embree").results) {
 			std::printf("ERROR: Embree's %s hits differ with and without the record\n", names[s]);
 			status = 1;
 		}
 	}
+	std::printf("(ratios: median over the repeats of the ratio within a repeat)\n");
+	std::printf("for information, Embree's rtcIntersect1 alone (t, u, v and the triangle, no record), 1 thread:");
+	for (int s = 0; s < 2; s++) {
+		const Measurement &a = result(s, "ours"), &e = result(s, "embree");
+		std::printf(" %s %.2f Mrays/s, ours / it %.2f%s", names[s], median(e.single), median_ratio(a.single, e.single),
+		            s == 0 ? ";" : "\n");
+	}
 #else
 	std::printf("\n(Embree not found at configure time: install libembree-dev, or run ./lab bench, to compare)\n\n");
-	std::printf("%-11s %10s %10s\n", "Mrays/s", "1 thread", "all cores");
-	for (int s = 0; s < 3; s++)
-		std::printf("%-11s %10.2f %10.2f\n", names[s], median(results[s][0].single), median(results[s][0].all));
+	std::printf("%-11s %21s   %21s\n", "Mrays/s", "1 thread: ours task 3", "all cores: ours task 3");
+	for (int s = 0; s < 3; s++) {
+		const Measurement &a = result(s, "ours"), &t = result(s, "task3");
+		std::printf("%-11s %14.2f %6.2f   %15.2f %6.2f\n", names[s], median(a.single), median(t.single), median(a.all),
+		            median(t.all));
+	}
 #endif
 	return status;
 }

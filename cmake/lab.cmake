@@ -37,48 +37,71 @@ set(LAB_TASK_FILES
 	task7_env_light.cpp)
 
 # The instructors' repository has the reference sources; a student release (./lab export) has
-# prebuilt/libtask<N>_reference.a instead.
-if(EXISTS ${PROJECT_SOURCE_DIR}/reference)
+# prebuilt/libtask<N>_reference.a instead, and prebuilt/libaccelerator_fast.a for the framework's
+# fast accelerator, whose source (framework/accel/fast/) it does not ship either.
+# LAB_ROOT: the repository's root (the project's source folder unless a project inside the
+# repository, as tests/fuzz, sets it).
+if(NOT DEFINED LAB_ROOT)
+	set(LAB_ROOT ${PROJECT_SOURCE_DIR})
+endif()
+if(EXISTS ${LAB_ROOT}/reference)
 	set(LAB_REFERENCE_SOURCES ON)
-elseif(EXISTS ${PROJECT_SOURCE_DIR}/prebuilt)
+elseif(EXISTS ${LAB_ROOT}/prebuilt)
 	set(LAB_REFERENCE_SOURCES OFF)
 else()
 	message(FATAL_ERROR "neither reference/ nor prebuilt/ is present: the other tasks cannot be linked")
 endif()
 
-# lab_prebuilt_reference(<n>): task<n>_reference from the shipped archive, linked whole (like the
-# object library it replaces), since the framework calls into it and it calls into the framework.
-function(lab_prebuilt_reference n)
-	set(archive ${PROJECT_SOURCE_DIR}/prebuilt/libtask${n}_reference.a)
+# lab_library(<name> <source>...): for code a student release ships compiled. In the instructors'
+# repository, the object library <name> of the sources, and the archive prebuilt/lib<name>.a that
+# ./lab export ships in its place (built only on request). In a student release, <name> is that
+# archive, linked whole (like the object library it replaces), since the framework calls into it
+# and it calls into the framework.
+function(lab_library name)
+	if(LAB_REFERENCE_SOURCES)
+		add_library(${name} OBJECT ${ARGN})
+		target_link_libraries(${name} PUBLIC framework_headers)
+		lab_defaults(${name})
+		add_library(${name}_archive STATIC EXCLUDE_FROM_ALL $<TARGET_OBJECTS:${name}>)
+		set_target_properties(${name}_archive PROPERTIES
+			OUTPUT_NAME ${name} ARCHIVE_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/prebuilt)
+		return()
+	endif()
+	set(archive ${LAB_ROOT}/prebuilt/lib${name}.a)
 	if(NOT EXISTS ${archive})
 		message(FATAL_ERROR "missing ${archive}: re-export the student release (./lab export)")
 	endif()
-	add_library(task${n}_reference_archive STATIC IMPORTED)
-	set_target_properties(task${n}_reference_archive PROPERTIES IMPORTED_LOCATION ${archive})
-	add_library(task${n}_reference INTERFACE)
-	target_link_libraries(task${n}_reference INTERFACE
-		framework_headers "$<LINK_LIBRARY:WHOLE_ARCHIVE,task${n}_reference_archive>")
+	add_library(${name}_archive STATIC IMPORTED)
+	set_target_properties(${name}_archive PROPERTIES IMPORTED_LOCATION ${archive})
+	add_library(${name} INTERFACE)
+	target_link_libraries(${name} INTERFACE framework_headers "$<LINK_LIBRARY:WHOLE_ARCHIVE,${name}_archive>")
 endfunction()
 
-# lab_link_tasks(<target> <impl of task 1> ... <impl of task 7>): link the chosen implementations.
-function(lab_link_tasks target)
-	set(n 1)
-	foreach(impl IN LISTS ARGN)
-		target_link_libraries(${target} PRIVATE task${n}_${impl})
-		math(EXPR n "${n} + 1")
-	endforeach()
-	target_link_libraries(${target} PRIVATE framework)
-endfunction()
-
-# The implementation list with task <n> from <impl_n> and every other task from the reference.
-function(lab_mix out n impl_n)
-	set(list "")
-	foreach(i RANGE 1 7)
-		if(i EQUAL n)
-			list(APPEND list ${impl_n})
-		else()
-			list(APPEND list reference)
+# lab_link_tasks(<target> <impl> [TASK<n> <impl_n>]...): link task <n> from <impl_n> where one is
+# named and every other task from <impl>, e.g. lab_link_tasks(grader_task3_student reference TASK3
+# student); then the framework, with the accelerator that suits the choice (framework/accel/
+# accelerator.h): the fast one only where tasks 2 and 3 are both the reference, else the plain one,
+# which is task 3's BVH::hit, so that a student's code runs end to end. ACCELERATOR fast|plain
+# overrides that choice: only to prove that a test notices the wrong one.
+function(lab_link_tasks target impl)
+	cmake_parse_arguments(PARSE_ARGV 2 arg "" "TASK1;TASK2;TASK3;TASK4;TASK5;TASK6;TASK7;ACCELERATOR" "")
+	if(arg_UNPARSED_ARGUMENTS)
+		message(FATAL_ERROR "lab_link_tasks(${target}): unexpected arguments ${arg_UNPARSED_ARGUMENTS}")
+	endif()
+	foreach(n RANGE 1 7)
+		set(impl_${n} ${impl})
+		if(arg_TASK${n})
+			set(impl_${n} ${arg_TASK${n}})
 		endif()
+		target_link_libraries(${target} PRIVATE task${n}_${impl_${n}})
 	endforeach()
-	set(${out} ${list} PARENT_SCOPE)
+	set(accelerator ${arg_ACCELERATOR})
+	if(NOT accelerator)
+		if(impl_2 STREQUAL "reference" AND impl_3 STREQUAL "reference")
+			set(accelerator fast)
+		else()
+			set(accelerator plain)
+		endif()
+	endif()
+	target_link_libraries(${target} PRIVATE accelerator_${accelerator} framework)
 endfunction()

@@ -1,5 +1,5 @@
 #include "material.h"
-#include "lifecycle.h"
+#include "render_observer.h"
 
 #include <type_traits>
 
@@ -10,21 +10,9 @@ template<typename T> constexpr bool is_discrete_v =
 	std::is_same_v<T, BSDF_Mirror> || std::is_same_v<T, BSDF_Glass>;
 } // namespace
 
-namespace {
-const char* bsdf_name(const BSDF_Variant& bsdf) {
-	constexpr const char* names[] = {"lambertian", "mirror", "glass"};
-	return names[bsdf.index()];
-}
-} // namespace
-
 Scatter BSDF::scatter(RNG& rng, Vec3 out_dir) const {
 	Scatter s = std::visit([&](const auto& b) { return b.scatter(rng, out_dir); }, bsdf);
-	if (auto recorder = Lifecycle_Recorder::active()) {
-		recorder->event(std::string("BSDF sample (") + bsdf_name(bsdf) + ", " +
-		                (is_discrete() ? "discrete" : "continuous") + "): out_dir (local) " + format_vec(out_dir) +
-		                " -> in_dir (local) " + format_vec(s.direction) + ", attenuation " +
-		                format_vec(s.attenuation));
-	}
+	report<BSDF_Sampled>(s, *this, out_dir);
 	return s;
 }
 
@@ -36,9 +24,7 @@ Spectrum BSDF::evaluate(Vec3 out_dir, Vec3 in_dir) const {
 			else return Spectrum{0.0f};
 		},
 		bsdf);
-	if (auto recorder = Lifecycle_Recorder::active()) {
-		recorder->event("BSDF evaluate(out, in " + format_vec(in_dir) + ") = " + format_vec(f));
-	}
+	report<BSDF_Evaluated>(f, *this, out_dir, in_dir);
 	return f;
 }
 
@@ -50,9 +36,7 @@ float BSDF::pdf(Vec3 out_dir, Vec3 in_dir) const {
 			else return 0.0f;
 		},
 		bsdf);
-	if (auto recorder = Lifecycle_Recorder::active()) {
-		recorder->event("BSDF pdf(out, in " + format_vec(in_dir) + ") = " + std::to_string(p));
-	}
+	report<BSDF_Pdf>(p, *this, out_dir, in_dir);
 	return p;
 }
 
@@ -85,6 +69,6 @@ Spectrum BSDF::albedo() const {
 
 Spectrum Material::emitted(Vec3 out_dir) const {
 	Spectrum e = out_dir.y > 0.0f ? emission : Spectrum{0.0f};
-	if (auto recorder = Lifecycle_Recorder::active()) recorder->emitted(e);
+	report<Emitted>(e, out_dir);
 	return e;
 }

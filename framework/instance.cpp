@@ -1,11 +1,7 @@
 #include "instance.h"
+#include "render_observer.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
-
-Ray_Counters& ray_counters() {
-	thread_local Ray_Counters counters;
-	return counters;
-}
 
 Instance::Instance(std::variant<Sphere, Tri_Mesh> shape_, Mat4 to_world_, uint32_t material_, uint32_t index_)
 	: shape(std::move(shape_)), to_world(to_world_), to_local(glm::inverse(to_world_)),
@@ -24,16 +20,17 @@ Instance::Instance(std::variant<Sphere, Tri_Mesh> shape_, Mat4 to_world_, uint32
 }
 
 Trace Instance::hit(const Ray& ray) const {
-	ray_counters().instance_tests++;
 	// An affine map keeps the ray parameter: to_local(o + t d) = to_local(o) + t * A d.
 	Ray local(transform_point(to_local, ray.point), transform_direction(to_local, ray.dir), ray.dist_bounds,
 	          ray.depth);
 	Trace trace = std::visit([&](const auto& s) { return s.hit(local); }, shape);
-	if (!trace.hit) return trace;
-	trace.origin = ray.point;
-	trace.position = ray.at(trace.distance);
-	trace.normal = glm::normalize(normal_to_world * trace.normal);
-	trace.object = index;
-	trace.material = material;
+	if (trace.hit) {
+		trace.origin = ray.point;
+		trace.position = ray.at(trace.distance);
+		trace.normal = glm::normalize(normal_to_world * trace.normal);
+		trace.object = index;
+		trace.material = material;
+	}
+	report<Instance_Tested>(trace, *this, ray);
 	return trace;
 }

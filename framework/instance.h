@@ -24,9 +24,3 @@ struct Instance {
 	uint32_t index = 0; // position in the scene description
 	BBox world_bbox;
 };
-
-// Counters kept per thread, for the debug views, the graders and the benchmarks.
-struct Ray_Counters {
-	uint64_t instance_tests = 0; // calls of Instance::hit
-};
-Ray_Counters& ray_counters(); // this thread's counters

@@ -4,8 +4,6 @@
 #include <cstdio>
 
 namespace {
-thread_local Lifecycle_Recorder* active_recorder = nullptr;
-
 std::string format_bounds(Vec2 b) {
 	char buffer[64];
 	std::snprintf(buffer, sizeof buffer, "[%.6g, %.6g]", b.x, b.y);
@@ -46,6 +44,11 @@ std::string format_weight(const Lifecycle_Ray& parent, const Lifecycle_Ray& chil
 	return text;
 }
 
+const char* bsdf_name(const BSDF& bsdf) {
+	constexpr const char* names[] = {"lambertian", "mirror", "glass"};
+	return names[bsdf.bsdf.index()];
+}
+
 void print_ray(std::ostream& out, const Lifecycle_Ray& node, const std::vector<std::string>& names,
                Spectrum throughput, const std::string& indent) {
 	out << indent << "ray depth " << node.ray.depth << ": origin " << format_vec(node.ray.point) << " dir "
@@ -77,43 +80,55 @@ std::string format_vec(Vec3 v) {
 	return buffer;
 }
 
-Lifecycle_Recorder::Lifecycle_Recorder() : previous(active_recorder) {
-	active_recorder = this;
-}
-
-Lifecycle_Recorder::~Lifecycle_Recorder() {
-	active_recorder = previous;
-}
-
-Lifecycle_Recorder* Lifecycle_Recorder::active() {
-	return active_recorder;
-}
-
-void Lifecycle_Recorder::begin_ray(const Ray& ray) {
+void Lifecycle_Recorder::begin(const Ray_Traced& traced) {
 	auto node = std::make_unique<Lifecycle_Ray>();
-	node->ray = ray;
+	node->ray = traced.ray;
 	node->parent = current;
 	Lifecycle_Ray* raw = node.get();
 	(current ? current->children : roots).push_back(std::move(node));
 	current = raw;
 }
 
-void Lifecycle_Recorder::set_hit(const Trace& hit) {
-	if (current) current->hit = hit;
-}
-
-void Lifecycle_Recorder::end_ray(Spectrum radiance) {
+void Lifecycle_Recorder::end(const Ray_Traced&, Spectrum radiance) {
 	if (!current) return;
 	current->radiance = radiance;
 	current = current->parent;
 }
 
-void Lifecycle_Recorder::event(std::string text) {
-	if (current) current->events.push_back(std::move(text));
+void Lifecycle_Recorder::end(const Closest_Hit&, const Trace& hit) {
+	if (current) current->hit = hit;
 }
 
-void Lifecycle_Recorder::emitted(Spectrum radiance) {
+void Lifecycle_Recorder::end(const Light_Sampled&, const Light_Sample& sample) {
+	event("light sample (" +
+	      (sample.environment ? std::string("environment") : "area light " + std::to_string(sample.light)) +
+	      "): direction " + format_vec(sample.direction));
+}
+
+void Lifecycle_Recorder::end(const Light_Pdf& query, float pdf) {
+	event("area_lights_pdf of direction " + format_vec(query.dir) + " = " + std::to_string(pdf));
+}
+
+void Lifecycle_Recorder::end(const BSDF_Sampled& query, const Scatter& s) {
+	event(std::string("BSDF sample (") + bsdf_name(query.bsdf) + ", " +
+	      (query.bsdf.is_discrete() ? "discrete" : "continuous") + "): out_dir (local) " + format_vec(query.out_dir) +
+	      " -> in_dir (local) " + format_vec(s.direction) + ", attenuation " + format_vec(s.attenuation));
+}
+
+void Lifecycle_Recorder::end(const BSDF_Evaluated& query, Spectrum f) {
+	event("BSDF evaluate(out, in " + format_vec(query.in_dir) + ") = " + format_vec(f));
+}
+
+void Lifecycle_Recorder::end(const BSDF_Pdf& query, float pdf) {
+	event("BSDF pdf(out, in " + format_vec(query.in_dir) + ") = " + std::to_string(pdf));
+}
+
+void Lifecycle_Recorder::end(const Emitted&, Spectrum radiance) {
 	if (current) current->emitted += radiance;
+}
+
+void Lifecycle_Recorder::event(std::string text) {
+	if (current) current->events.push_back(std::move(text));
 }
 
 void Lifecycle_Recorder::print(std::ostream& out, const std::vector<std::string>& material_names) {

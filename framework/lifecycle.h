@@ -1,11 +1,11 @@
 #pragma once
 // Ray lifecycle: follows the samples of one pixel and records each ray's life, for printing.
 //
-// It records from framework code that any implementation goes through (trace(), the BSDF
-// dispatch, emission, light sampling), so it works the same with student and reference code.
-// Recording is off unless a Lifecycle_Recorder is active on the current thread.
-#include "ray.h"
-#include "trace.h"
+// A render observer (render_observer.h): it records what the framework tells it from code that any
+// implementation goes through (trace(), the closest hit, the BSDF dispatch, emission, light
+// sampling), so it works the same with student and reference code. Recording is off unless a
+// Lifecycle_Recorder is the active observer of the current thread.
+#include "render_observer.h"
 
 #include <memory>
 #include <ostream>
@@ -22,23 +22,8 @@ struct Lifecycle_Ray {
 	Lifecycle_Ray* parent = nullptr;
 };
 
-class Lifecycle_Recorder {
+class Lifecycle_Recorder : public Render_Observer {
 public:
-	// Makes this recorder the current thread's until destroyed.
-	Lifecycle_Recorder();
-	~Lifecycle_Recorder();
-	Lifecycle_Recorder(const Lifecycle_Recorder&) = delete;
-	Lifecycle_Recorder& operator=(const Lifecycle_Recorder&) = delete;
-
-	// The active recorder of this thread, or nullptr (the usual case: nothing is recorded).
-	static Lifecycle_Recorder* active();
-
-	void begin_ray(const Ray& ray);
-	void set_hit(const Trace& hit);
-	void end_ray(Spectrum radiance);
-	void event(std::string text);
-	void emitted(Spectrum radiance);
-
 	// Prints every recorded camera ray as a tree, with the weight each bounce applied and the
 	// running throughput, then forgets them.
 	void print(std::ostream& out, const std::vector<std::string>& material_names);
@@ -49,10 +34,20 @@ public:
 	}
 
 private:
+	void begin(const Ray_Traced& traced) override;
+	void end(const Ray_Traced&, Spectrum radiance) override;
+	void end(const Closest_Hit&, const Trace& hit) override;
+	void end(const Light_Sampled&, const Light_Sample& sample) override;
+	void end(const Light_Pdf& query, float pdf) override;
+	void end(const BSDF_Sampled& query, const Scatter& scatter) override;
+	void end(const BSDF_Evaluated& query, Spectrum f) override;
+	void end(const BSDF_Pdf& query, float pdf) override;
+	void end(const Emitted&, Spectrum radiance) override;
+	void event(std::string text); // at the current ray
+
 	std::vector<std::unique_ptr<Lifecycle_Ray>> roots;
 	Lifecycle_Ray* current = nullptr;
-	Lifecycle_Recorder* previous = nullptr;
 };
 
-// Formatting helpers shared by the hooks.
+// "(x, y, z)", as the printed lifecycle shows vectors.
 std::string format_vec(Vec3 v);

@@ -1,8 +1,7 @@
 #include "pathtracer.h"
 #include "bvh_visits.h"
 #include "frame.h"
-#include "lifecycle.h"
-#include "time_profile.h"
+#include "render_observer.h"
 
 #include <array>
 #include <stdexcept>
@@ -48,28 +47,14 @@ Pathtracer::Pathtracer(const Scene& scene_, Render_Settings settings_, View view
 	: scene(scene_), settings(settings_), view(view_) {
 }
 
-namespace {
-// The scene's closest hit, counted and timed when a Time_Profile is active.
-Trace profiled_hit(const Scene& scene, const Ray& ray) {
-	Time_Profile* profile = Time_Profile::active();
-	Profile_Timer timer(profile, &Time_Profile::tracing, profile ? profile->rays++ : 0);
-	return scene.hit(ray);
-}
-} // namespace
-
 Spectrum Pathtracer::trace(RNG& rng, const Ray& ray) const {
-	Lifecycle_Recorder* recorder = Lifecycle_Recorder::active();
-	if (recorder) recorder->begin_ray(ray);
-	Spectrum radiance{0.0f};
-	if (view != View::path) {
-		radiance = debug_view(ray);
-	} else {
-		Trace hit = profiled_hit(scene, ray);
-		if (recorder) recorder->set_hit(hit);
-		radiance = hit.hit ? shade(rng, ray, hit) : scene.environment_radiance(ray.dir);
-	}
-	if (recorder) recorder->end_ray(radiance);
-	return radiance;
+	return observe<Ray_Traced>(
+		[&] {
+			if (view != View::path) return debug_view(ray);
+			Trace hit = observe<Closest_Hit>([&] { return scene.hit(ray); }, ray);
+			return hit.hit ? shade(rng, ray, hit) : scene.environment_radiance(ray.dir);
+		},
+		ray);
 }
 
 Spectrum Pathtracer::eye_light(const Ray& ray, const Trace& hit) const {
@@ -112,34 +97,25 @@ Vec3 Pathtracer::sample_area_lights(RNG& rng, Vec3 from) const {
 		throw std::logic_error("sample_area_lights: this scene has no lights; check has_lights() before "
 		                       "sampling them (handout §6.2)");
 	}
-	Time_Profile* profile = Time_Profile::active();
-	Profile_Timer timer(profile, &Time_Profile::light_sampling, profile ? profile->light_samples++ : 0);
-	uint32_t i = rng.integer(uint32_t(light_count(scene)));
-	Vec3 dir;
-	if (i < scene.area_lights.count()) {
-		dir = scene.area_lights.sample(i, rng, from);
-	} else {
-		Vec2 u = rng.unit2();
-		dir = std::visit([&](const auto& env) { return env.sample(u); }, *scene.environment);
-	}
-	if (auto recorder = Lifecycle_Recorder::active()) {
-		bool env = i >= scene.area_lights.count();
-		recorder->event("light sample (" + (env ? std::string("environment") : "area light " + std::to_string(i)) +
-		                "): direction " + format_vec(dir));
-	}
-	return dir;
+	return observe<Light_Sampled>(
+		[&] {
+			uint32_t i = rng.integer(uint32_t(light_count(scene)));
+			if (i < scene.area_lights.count()) return Light_Sample{scene.area_lights.sample(i, rng, from), i, false};
+			Vec2 u = rng.unit2();
+			return Light_Sample{std::visit([&](const auto& env) { return env.sample(u); }, *scene.environment), i, true};
+		},
+		from)
+		.direction;
 }
 
 float Pathtracer::area_lights_pdf(Vec3 from, Vec3 dir) const {
 	if (!has_lights()) return 0.0f; // no light can produce any direction
-	Time_Profile* profile = Time_Profile::active();
-	Profile_Timer timer(profile, &Time_Profile::light_sampling, profile ? profile->light_pdfs++ : 0);
-	float pdf = 0.0f;
-	for (size_t i = 0; i < scene.area_lights.count(); i++) pdf += scene.area_lights.pdf(i, from, dir);
-	if (scene.environment) pdf += std::visit([&](const auto& env) { return env.pdf(dir); }, *scene.environment);
-	pdf /= float(light_count(scene));
-	if (auto recorder = Lifecycle_Recorder::active()) {
-		recorder->event("area_lights_pdf of direction " + format_vec(dir) + " = " + std::to_string(pdf));
-	}
-	return pdf;
+	return observe<Light_Pdf>(
+		[&] {
+			float pdf = 0.0f;
+			for (size_t i = 0; i < scene.area_lights.count(); i++) pdf += scene.area_lights.pdf(i, from, dir);
+			if (scene.environment) pdf += std::visit([&](const auto& env) { return env.pdf(dir); }, *scene.environment);
+			return pdf / float(light_count(scene));
+		},
+		from, dir);
 }

@@ -34,9 +34,8 @@ void render_tile(const Pathtracer& pt, const Render_Settings& settings, const Ti
 }
 
 // options.tile_size, or smaller for a small film: at least TILES_PER_THREAD tiles for each thread,
-// so that the threads finish within a small tile of each other (a 64 x 64 film in 16-pixel tiles
-// has 16 tiles, and two threads scaled 1.83x on it; in 8-pixel tiles, 64). The image does not
-// depend on it.
+// so that the threads finish within a small tile of each other (bench/README.md, "Render
+// throughput"). The image does not depend on it.
 uint32_t tile_size(const Render_Settings& settings, const Render_Options& options, uint32_t threads) {
 	constexpr uint64_t TILES_PER_THREAD = 16;
 	constexpr uint32_t SMALLEST = 4;

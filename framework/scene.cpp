@@ -6,6 +6,7 @@ void Scene::commit() {
 	// after a single box test. More objects get a leaf each.
 	size_t leaf_size = objects.size() <= HANDFUL_OF_OBJECTS ? objects.size() : 1;
 	bvh.build(std::move(objects), leaf_size);
+	accelerator = Accelerator<Instance>(bvh);
 	objects.clear();
 }
 

@@ -33,13 +33,17 @@ struct Scene {
 	// Scenes of at most this many objects are not worth a hierarchy (see commit()).
 	static constexpr size_t HANDFUL_OF_OBJECTS = 4;
 
-	// Collects the area lights and builds the top-level BVH over `objects`; call once after
-	// filling them in.
+	// Collects the area lights and builds the top-level BVH over `objects` and its accelerator;
+	// call once after filling them in.
 	void commit();
 
 	// Closest hit of a world-space ray.
 	Trace hit(const Ray& ray) const {
-		return bvh.hit(ray);
+		return accelerator.hit(bvh, ray);
+	}
+	// Whether anything is hit with t in ray.dist_bounds (it may stop at the first hit found).
+	bool occluded(const Ray& ray) const {
+		return accelerator.occluded(bvh, ray);
 	}
 	// Radiance from the environment along dir (0 without an environment).
 	Spectrum environment_radiance(Vec3 dir) const;
@@ -51,6 +55,7 @@ struct Scene {
 	std::vector<std::string> material_names;
 	std::vector<Instance> objects; // moved into `bvh` by commit()
 	BVH<Instance> bvh;
+	Accelerator<Instance> accelerator; // made from bvh by commit() (accel/accelerator.h)
 	std::optional<Environment> environment;
 	Area_Lights area_lights; // built by commit()
 };

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The student release: writes DIR with everything students need and no reference source. The
 # reference tasks ship compiled, one static archive per task in prebuilt/, so that each grader still
-# links the student's task N with the reference of the other six (cmake/lab.cmake).
+# links the student's task N with the reference of the other six (cmake/lab.cmake); so does the
+# framework's fast accelerator (framework/accel/fast/, whose packed triangle and box tests would
+# give tasks 2 and 3 away).
 #
 # usage: tools/export_student.sh DIR   (./lab export DIR)
 # LAB_EXPORT_BUILD_DIR: where the archives are built (default build-release-objects/).
@@ -19,21 +21,24 @@ fi
 
 # The reference tasks as students will compile their own: Release, the lab's flags, and no LTO
 # (LTO objects only link with the very compiler version that wrote them).
-cmake -S "$root" -B "$objects" -G Ninja -DCMAKE_BUILD_TYPE=Release -DLAB_LTO=OFF >&2
+cmake -S "$root" --preset dev -B "$objects" >&2
 archives=(framework_sealed_archive)
 for n in 1 2 3 4 5 6 7; do archives+=("task${n}_reference_archive"); done
+archives+=(accelerator_fast_archive)
 cmake --build "$objects" --parallel "$jobs" --target "${archives[@]}" >&2
 
-# The tree: everything but reference/, the framework's sealed sources (framework/sealed/, shipped
-# compiled), the instructors' tests (stress, images, crosscheck, fuzz, export, mutants, security) and
-# the benchmarks. tests/judge runs the graders; tests/report is the grade report (./lab report), whose
+# The tree: everything but reference/, the framework's code that carries task algorithms
+# (framework/sealed/, framework/accel/fast/: shipped compiled), the instructors' tests (stress,
+# images, crosscheck, fuzz, export, isolation, mutants, security, class, gradescope) and the
+# benchmarks. tests/judge runs the graders; tests/report is the grade report (./lab report), whose
 # test in Chromium is registered only where reference/ exists.
 mkdir -p "$dest/tests" "$dest/prebuilt" "$dest/tools"
-(cd "$root" && cp -R CMakeLists.txt lab cmake framework tasks student scenes handouts "$dest/")
-rm -rf "$dest/framework/sealed"
+(cd "$root" && cp -R CMakeLists.txt CMakePresets.json lab cmake framework tasks student scenes handouts "$dest/")
+rm -r "$dest/framework/sealed" "$dest/framework/accel/fast"
 cp "$root/tools/compile-student" "$dest/tools/"
 (cd "$root/tests" && cp -R CMakeLists.txt judge support framework task1 task2 task3 task4 task5 task6 task7 report "$dest/tests/")
-cp "$objects"/prebuilt/libtask[1-7]_reference.a "$objects/prebuilt/libframework_sealed.a" "$dest/prebuilt/"
+cp "$objects"/prebuilt/libtask[1-7]_reference.a "$objects"/prebuilt/libaccelerator_fast.a \
+	"$objects/prebuilt/libframework_sealed.a" "$dest/prebuilt/"
 
 # The students' README: the "For students" section of the instructors' README.
 {

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The student release (./lab export) in a temporary folder: it must hold no solution source (no
-# reference/, no framework/sealed/, no line of reference code, no function of the reference or the
-# sealed framework, renamed or not), and its task-1 grader must build from the prebuilt reference and
-# fail on the shipped stub.
+# reference/, no framework/sealed/ or framework/accel/fast/, no line of reference code, no function of
+# the reference or of those framework sources, renamed or not), and its task-1 grader must build from
+# the prebuilt reference with the release's presets and fail on the shipped stub.
 #
 # usage: test_export.sh REPOSITORY_ROOT SOLUTION_SCAN
 set -euo pipefail
@@ -24,6 +24,8 @@ release=$tmp/release
 for n in 1 2 3 4 5 6 7; do
 	[ -f "$release/prebuilt/libtask${n}_reference.a" ] || fail "prebuilt/libtask${n}_reference.a is missing"
 done
+[ ! -e "$release/framework/accel/fast" ] || fail "the release has the fast accelerator's source, framework/accel/fast/"
+[ -f "$release/prebuilt/libaccelerator_fast.a" ] || fail "prebuilt/libaccelerator_fast.a is missing"
 # Code lines (not comments) of reference/ long enough to be distinctive, absent from the stubs and
 # not quoted on purpose by a handout. A single line can recur by coincidence (a test oracle does
 # the same thing); three in one file mean copied code.
@@ -47,8 +49,8 @@ done < <(grep -rIcF -f "$patterns" "$release" | grep -v ':0$' || true)
 echo "export test: no file of the release has 3 of the $checked distinctive reference lines"
 
 # By function: no function of the release holds most of a function of the reference or of the
-# sealed framework, whatever its names (tests/export/solution_scan.cpp).
-solution=("$root"/reference/*.cpp "$root"/framework/sealed/*.cpp)
+# framework code a release ships compiled, whatever its names (tests/export/solution_scan.cpp).
+solution=("$root"/reference/*.cpp "$root"/framework/sealed/*.cpp "$root"/framework/accel/fast/*.cpp)
 mapfile -t release_sources < <(find "$release" -name '*.cpp' -o -name '*.h' | grep -v "/build/" | sort)
 "$scan" --solution "${solution[@]}" --release "${release_sources[@]}" >"$tmp/scan.log" ||
 	{ cat "$tmp/scan.log" >&2; fail "the release holds solution functions"; }
@@ -64,12 +66,12 @@ grep -q "of the solution function" "$tmp/planted.log" || fail "solution_scan fai
 echo "export test: solution_scan finds a renamed copy of Triangle::hit"
 
 # The student's view: configure, build the task-1 grader (and the grade report's tool), run ctest -L task1.
-cmake -S "$release" -B "$release/build" -G Ninja -DCMAKE_BUILD_TYPE=Release >"$tmp/configure.log" 2>&1 ||
+cmake -S "$release" --preset release -B "$release/build" >"$tmp/configure.log" 2>&1 ||
 	{ cat "$tmp/configure.log" >&2; fail "the release does not configure"; }
 cmake --build "$release/build" --parallel 2 --target judge_task1 subject_task1_student grade_report >"$tmp/build.log" 2>&1 ||
 	{ tail -40 "$tmp/build.log" >&2; fail "judge_task1, subject_task1_student or grade_report does not build in the release"; }
 status=0
-(cd "$release/build" && ctest --no-tests=error --output-on-failure -L task1) >"$tmp/ctest.log" 2>&1 || status=$?
+(cd "$release" && ctest --preset lab --test-dir "$release/build" -L task1) >"$tmp/ctest.log" 2>&1 || status=$?
 cat "$tmp/ctest.log" | tail -15
 [ "$status" -ne 0 ] || fail "ctest -L task1 passed on the shipped stub"
 grep -q "tests failed out of 1$" "$tmp/ctest.log" || fail "ctest -L task1 did not run exactly one test"

@@ -66,10 +66,10 @@ TEST_CASE("follow_pixel shows each ray's hit, the BSDF sample and the weights", 
 }
 
 TEST_CASE("Nothing is recorded unless a pixel is followed", "[lifecycle]") {
-	CHECK(Lifecycle_Recorder::active() == nullptr);
+	CHECK(Render_Observer::active() == nullptr);
 	{
 		Lifecycle_Recorder recorder;
-		CHECK(Lifecycle_Recorder::active() == &recorder);
+		CHECK(Render_Observer::active() == &recorder);
 	}
-	CHECK(Lifecycle_Recorder::active() == nullptr);
+	CHECK(Render_Observer::active() == nullptr);
 }

@@ -3,12 +3,12 @@
 // sampling table for an environment that is not importance-sampled, and an any-hit query that
 // stops at the first hit. Each is shown by a counter, with a case where the work is done so that
 // the counter is seen to count.
+#include "call_counter.h"
 #include "furnace_scenes.h"
 #include "light_scenes.h"
 #include "render.h"
 #include "scene_loader.h"
 #include "test_materials.h"
-#include "time_profile.h"
 
 #include <catch2/catch.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -18,20 +18,20 @@
 namespace {
 
 struct Counts {
-	uint64_t rays, light_samples, light_pdfs;
+	uint64_t closest_hits, light_samples, light_pdfs;
 };
 
 // The closest-hit queries and light-sampling calls made while rendering `scene` (64 x 64, 4 spp,
 // one thread).
-Counts profile_render(const Scene& scene) {
+Counts count_render(const Scene& scene) {
 	Render_Settings settings;
 	settings.width = settings.height = 64;
 	settings.samples = 4;
 	Render_Options options;
-	options.threads = 1; // render() then works on this thread, where the profile is active
-	Time_Profile profile;
+	options.threads = 1; // render() then works on this thread, where the counter is active
+	Call_Counter counter;
 	render(Pathtracer(scene, settings), options);
-	return Counts{profile.rays, profile.light_samples, profile.light_pdfs};
+	return Counts{counter.closest_hits, counter.light_samples, counter.light_pdfs};
 }
 
 // A sphere of `material` under a square light, seen from outside.
@@ -63,27 +63,27 @@ TEST_CASE("a scene of a handful of objects is traced without a hierarchy", "[fra
 TEST_CASE("paths at mirrors and glass, and scenes without lights, sample no lights", "[framework][skip]") {
 	// (The light is a black diffuse surface: paths end there, sampling nothing.)
 	SECTION("a diffuse sphere under a light samples it (the counters count)") {
-		Counts profile = profile_render(sphere_under_light(diffuse_material(Spectrum{0.5f})));
-		CHECK(profile.rays > 0);
-		CHECK(profile.light_samples > 0);
-		CHECK(profile.light_pdfs > 0);
+		Counts calls = count_render(sphere_under_light(diffuse_material(Spectrum{0.5f})));
+		CHECK(calls.closest_hits > 0);
+		CHECK(calls.light_samples > 0);
+		CHECK(calls.light_pdfs > 0);
 	}
 	SECTION("a mirror or a glass sphere under a light: a discrete BSDF has no density to mix with a light's") {
 		for (const Material& material :
 		     {mirror_material(Spectrum{0.9f}), glass_material(Spectrum{1.0f}, Spectrum{1.0f}, 1.5f)}) {
-			Counts profile = profile_render(sphere_under_light(material));
-			CHECK(profile.rays > 0);
-			CHECK(profile.light_samples == 0);
-			CHECK(profile.light_pdfs == 0);
+			Counts calls = count_render(sphere_under_light(material));
+			CHECK(calls.closest_hits > 0);
+			CHECK(calls.light_samples == 0);
+			CHECK(calls.light_pdfs == 0);
 		}
 	}
 	SECTION("a diffuse sphere with neither emitters nor an environment") {
 		Furnace_Options dark;
 		dark.has_environment = false;
-		Counts profile = profile_render(sphere_seen_from_outside(diffuse_material(Spectrum{0.5f}), dark, 4.0f, 40.0f));
-		CHECK(profile.rays > 0);
-		CHECK(profile.light_samples == 0);
-		CHECK(profile.light_pdfs == 0);
+		Counts calls = count_render(sphere_seen_from_outside(diffuse_material(Spectrum{0.5f}), dark, 4.0f, 40.0f));
+		CHECK(calls.closest_hits > 0);
+		CHECK(calls.light_samples == 0);
+		CHECK(calls.light_pdfs == 0);
 	}
 }
 
@@ -102,7 +102,7 @@ TEST_CASE("only an importance-sampled environment map builds a sampling table", 
 	CHECK(importance.sampler.cdf.size() == 8 * 4);
 }
 
-TEST_CASE("BVH::occluded agrees with hit() and stops at the first hit", "[framework][skip]") {
+TEST_CASE("the occlusion query agrees with the closest hit and stops at the first hit", "[framework][skip]") {
 	SECTION("eight copies of one sphere on the ray: any hit tests one, closest hit all eight") {
 		Scene scene;
 		uint32_t white = add_material(scene, diffuse_material(Spectrum{0.5f}), "white");
@@ -110,12 +110,14 @@ TEST_CASE("BVH::occluded agrees with hit() and stops at the first hit", "[framew
 		scene.commit();
 		Ray ray(Vec3{-5.0f, 0.1f, 0.2f}, Vec3{1.0f, 0.0f, 0.0f});
 
-		ray_counters().instance_tests = 0;
-		REQUIRE(scene.bvh.occluded(ray));
-		CHECK(ray_counters().instance_tests == 1);
-		ray_counters().instance_tests = 0;
-		REQUIRE(scene.bvh.hit(ray).hit);
-		CHECK(ray_counters().instance_tests == 8);
+		{
+			Call_Counter calls;
+			REQUIRE(scene.occluded(ray));
+			CHECK(calls.instance_tests == 1);
+		}
+		Call_Counter calls;
+		REQUIRE(scene.hit(ray).hit);
+		CHECK(calls.instance_tests == 8);
 	}
 	SECTION("random segments through random triangles") {
 		std::mt19937 random(7);
@@ -126,14 +128,14 @@ TEST_CASE("BVH::occluded agrees with hit() and stops at the first hit", "[framew
 			Vec3 centre = point(), normal = glm::normalize(point());
 			triangles.push_back(Triangle{{centre, normal}, {centre + 0.4f * point(), normal}, {centre + 0.4f * point(), normal}});
 		}
-		BVH<Triangle> bvh(std::move(triangles), 4);
+		Tri_Mesh mesh(std::move(triangles), 4);
 		size_t blocked = 0;
 		for (int i = 0; i < 20000; i++) {
 			Ray ray(2.0f * point(), glm::normalize(point()), Vec2{0.0f, length(random)});
-			bool closest = bvh.hit(ray).hit;
+			bool closest = mesh.hit(ray).hit;
 			blocked += closest;
 			INFO("ray " << i);
-			REQUIRE(bvh.occluded(ray) == closest);
+			REQUIRE(mesh.accelerator.occluded(mesh.bvh, ray) == closest);
 		}
 		CHECK(blocked > 2000); // both answers are common
 		CHECK(blocked < 18000);

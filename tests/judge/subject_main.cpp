@@ -9,6 +9,7 @@
 #include "wire.h"
 
 #include "render.h"
+#include "render_observer.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -87,15 +88,23 @@ BVH_Triangles::Answer answer(const BVH_Triangles& request) {
 	return result;
 }
 
+// Counts the Instance::hit calls the framework reports while it is alive (render_observer.h).
+struct Instance_Test_Counter : Render_Observer {
+	uint64_t tests = 0;
+	void end(const Instance_Tested&, const Trace&) override {
+		tests++;
+	}
+};
+
 BVH_Instances::Answer answer(const BVH_Instances& request) {
 	// The decoded scene was committed, which moved its objects into scene.bvh.
 	BVH<Instance> bvh(std::vector<Instance>(request.scene.bvh.primitives), request.max_leaf_size);
 	BVH_Instances::Answer result;
 	result.tree = tree_of(bvh);
 	for (const Instance& object : bvh.primitives) result.order.push_back(object.index);
-	uint64_t tests_before = ray_counters().instance_tests;
+	Instance_Test_Counter counter;
 	for (const Ray& ray : request.rays) result.hits.push_back(bvh.hit(ray));
-	result.instance_tests = ray_counters().instance_tests - tests_before;
+	result.instance_tests = counter.tests;
 	return result;
 }
 
@@ -112,8 +121,8 @@ BSDF_Evaluate::Answer answer(const BSDF_Evaluate& request) {
 	return values;
 }
 
-BSDF_Pdf::Answer answer(const BSDF_Pdf& request) {
-	BSDF_Pdf::Answer values;
+protocol::BSDF_Pdf::Answer answer(const protocol::BSDF_Pdf& request) {
+	protocol::BSDF_Pdf::Answer values;
 	for (const auto& p : request.pairs) values.push_back(request.bsdf.pdf(p.out_dir, p.in_dir));
 	return values;
 }
@@ -217,7 +226,7 @@ std::string serve(Kind kind, const std::string& payload) {
 	case Kind::bvh_instances: return serve<BVH_Instances>(payload);
 	case Kind::bsdf_scatter: return serve<BSDF_Scatter>(payload);
 	case Kind::bsdf_evaluate: return serve<BSDF_Evaluate>(payload);
-	case Kind::bsdf_pdf: return serve<BSDF_Pdf>(payload);
+	case Kind::bsdf_pdf: return serve<protocol::BSDF_Pdf>(payload);
 	case Kind::reflect: return serve<Reflect>(payload);
 	case Kind::refract: return serve<Refract>(payload);
 	case Kind::fresnel: return serve<Fresnel>(payload);

@@ -1,0 +1,41 @@
+#pragma once
+// The fast accelerator's data: a finished BVH folded into wide nodes, and a mesh's triangles in
+// packs, laid out for 4-wide vector arithmetic (bench/README.md, "How the BVH queries are made
+// fast"). Built from any task-3 tree; used only where tasks 2 and 3 are both the reference.
+#include "bvh.h"
+
+#include <cstdint>
+#include <vector>
+
+// The binary tree with two of every three levels folded in: a node has up to eight children, whose
+// boxes two 4-wide slab tests handle.
+struct alignas(64) Wide_Node { // 288 bytes, padded to 320: five cache lines
+	static constexpr int WIDTH = 8; // children per node
+	// The children's boxes, one array per bound and axis, so that one 4-wide instruction handles
+	// the same bound of four children. An unused slot holds an empty box.
+	float min_x[WIDTH], min_y[WIDTH], min_z[WIDTH], max_x[WIDTH], max_y[WIDTH], max_z[WIDTH];
+	uint32_t first[WIDTH]; // interior child: its index in Wide_BVH::nodes; leaf: its first primitive,
+	                       // or in a BVH<Triangle> its first triangle pack
+	uint32_t count[WIDTH]; // leaf: its number of primitives (>= 1); interior child or unused: 0
+	                       // (an unused slot has first = UNUSED_SLOT and an empty box)
+	uint32_t start[WIDTH]; // leaf: its first primitive (as BVH::Node::start); otherwise 0. In the last
+	                       // line, read only by closest-hit queries, to fetch a leaf's triangles.
+
+	static constexpr uint32_t UNUSED_SLOT = ~0u;
+};
+
+// Four triangles of a leaf: vertex v0 and edges e1 = v1 - v0, e2 = v2 - v0, one array per
+// coordinate, so that one Möller–Trumbore test handles four. Lanes past the leaf's last triangle
+// are unused (index ~0u).
+struct alignas(32) Triangle_Pack { // 160 bytes, against 4 x 72 for the Triangles themselves
+	float v0[3][4], e1[3][4], e2[3][4];
+	uint32_t index[4]; // the triangle in BVH::primitives
+};
+
+struct Wide_BVH {
+	std::vector<Wide_Node> nodes;          // nodes[0] is the root; empty without primitives
+	std::vector<Triangle_Pack> triangle_packs; // BVH<Triangle> only: each leaf's packs, consecutive
+};
+
+// Folds a finished BVH into a Wide_BVH (wide_bvh_build.cpp).
+template<typename Primitive> Wide_BVH widen(const BVH<Primitive>& bvh);

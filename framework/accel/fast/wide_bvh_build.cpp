@@ -1,0 +1,96 @@
+// The fast accelerator's build: a finished BVH folded into wide nodes, a mesh's leaves packed.
+#include "instance.h"
+#include "tri_mesh.h"
+#include "wide_bvh.h"
+
+#include <algorithm>
+#include <iterator>
+#include <type_traits>
+
+namespace {
+
+// Appends the packs of triangles[start, start + size) to `packs`; returns the index of the first.
+uint32_t pack_triangles(const std::vector<Triangle>& triangles, size_t start, size_t size,
+                        std::vector<Triangle_Pack>& packs) {
+	uint32_t first = uint32_t(packs.size());
+	for (size_t i = 0; i < size; i++) {
+		if (i % 4 == 0) {
+			packs.emplace_back();
+			std::fill(std::begin(packs.back().index), std::end(packs.back().index), ~0u);
+		}
+		Triangle_Pack& pack = packs.back();
+		const Triangle& tri = triangles[start + i];
+		Vec3 e1 = tri.v1.position - tri.v0.position, e2 = tri.v2.position - tri.v0.position;
+		for (int axis = 0; axis < 3; axis++) {
+			pack.v0[axis][i % 4] = tri.v0.position[axis];
+			pack.e1[axis][i % 4] = e1[axis];
+			pack.e2[axis][i % 4] = e2[axis];
+		}
+		pack.index[i % 4] = uint32_t(start + i);
+	}
+	return first;
+}
+
+// The children of binary node `binary` that a wide node takes: its two children, then, until there
+// are Wide_Node::WIDTH or only leaves, the interior child of largest surface area (the one a ray
+// most likely enters) opened into its two. A leaf root is its own single child.
+template<typename Node> std::vector<size_t> wide_children(const std::vector<Node>& nodes, size_t binary) {
+	if (nodes[binary].is_leaf()) return {binary};
+	std::vector<size_t> children{nodes[binary].l, nodes[binary].r};
+	while (children.size() < size_t(Wide_Node::WIDTH)) {
+		auto largest = children.end();
+		for (auto c = children.begin(); c != children.end(); c++) {
+			if (!nodes[*c].is_leaf() &&
+			    (largest == children.end() || nodes[*c].bbox.surface_area() > nodes[*largest].bbox.surface_area()))
+				largest = c;
+		}
+		if (largest == children.end()) break; // only leaves
+		size_t opened = *largest;
+		*largest = nodes[opened].l;
+		children.push_back(nodes[opened].r);
+	}
+	return children;
+}
+
+} // namespace
+
+// From the root down, each wide node takes the children wide_children() chooses. A leaf of the
+// binary tree stays a leaf: a child slot with count > 0.
+template<typename Primitive> Wide_BVH widen(const BVH<Primitive>& bvh) {
+	Wide_BVH wide;
+	if (bvh.primitives.empty() || bvh.nodes.empty()) return wide;
+	wide.nodes.resize(1);
+	std::vector<std::pair<size_t, size_t>> todo{{bvh.root_idx, 0}}; // binary node -> its wide node
+	while (!todo.empty()) {
+		auto [binary, index] = todo.back();
+		todo.pop_back();
+		std::vector<size_t> children = wide_children(bvh.nodes, binary);
+		Wide_Node node;
+		for (int slot = 0; slot < Wide_Node::WIDTH; slot++) { // unused slots: an empty box and UNUSED_SLOT
+			BBox box = slot < int(children.size()) ? bvh.nodes[children[slot]].bbox : BBox{};
+			node.min_x[slot] = box.min.x, node.min_y[slot] = box.min.y, node.min_z[slot] = box.min.z;
+			node.max_x[slot] = box.max.x, node.max_y[slot] = box.max.y, node.max_z[slot] = box.max.z;
+			node.first[slot] = Wide_Node::UNUSED_SLOT, node.count[slot] = 0, node.start[slot] = 0;
+			if (slot >= int(children.size())) continue;
+			const auto& child = bvh.nodes[children[slot]];
+			if (child.is_leaf()) {
+				node.first[slot] = uint32_t(child.start);
+				if constexpr (std::is_same_v<Primitive, Triangle>)
+					node.first[slot] = pack_triangles(bvh.primitives, child.start, child.size, wide.triangle_packs);
+				node.count[slot] = uint32_t(child.size), node.start[slot] = uint32_t(child.start);
+			} else {
+				node.first[slot] = uint32_t(wide.nodes.size());
+				wide.nodes.emplace_back();
+				todo.push_back({children[slot], wide.nodes.size() - 1});
+			}
+		}
+		wide.nodes[index] = node;
+	}
+	// The vectors grew by doubling: give back the room they do not use.
+	wide.nodes.shrink_to_fit();
+	wide.triangle_packs.shrink_to_fit();
+	return wide;
+}
+
+template Wide_BVH widen(const BVH<Triangle>&);
+template Wide_BVH widen(const BVH<Instance>&);

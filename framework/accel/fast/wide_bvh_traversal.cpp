@@ -1,0 +1,245 @@
+// The fast accelerator (accel/accelerator.h): the queries of a finished BVH traverse its Wide_BVH
+// (wide_bvh.h). Linked only where tasks 2 and 3 are both the reference (cmake/lab.cmake).
+#include "accel/accelerator.h"
+#include "four_wide_tests.h"
+#include "instance.h"
+#include "tri_mesh.h"
+
+#include <algorithm>
+#include <iterator>
+#include <type_traits>
+#include <utility>
+
+using namespace four_wide;
+
+namespace {
+
+constexpr uint32_t NONE = ~0u;
+
+// Starts loading the cache lines of `size` bytes at `start` before they are used.
+[[gnu::always_inline]] inline void prefetch(const void* start, size_t size) {
+	const char* bytes = static_cast<const char*>(start);
+	for (size_t offset = 0; offset < size; offset += 64) __builtin_prefetch(bytes + offset);
+	__builtin_prefetch(bytes + size - 1); // the last line, when the bytes straddle one more
+}
+
+// The leaves of a BVH<Triangle>: a pack's test decides its four triangles (hit_pack), and the
+// closest-hit query keeps the closest one's index, hit at r.dist_bounds.y. With `exact` (the
+// fallback, see record()) or where the pack may round otherwise than Triangle::hit (fused
+// multiply-add), the candidates go to Triangle::hit.
+template<bool ANY_HIT> struct Triangle_Leaves {
+	const BVH<Triangle>& bvh;
+	const Wide_BVH& wide;
+	bool exact;
+	uint32_t best = NONE; // closest hit: the closest triangle found so far, hit at t
+	float t = INF_F;
+
+	// What a node's test fetches ahead for a leaf it finds (the leaves found are then fetched at
+	// once): its first pack, rarely in cache, and for the closest hit the pack's triangles, one of
+	// which the record reads: fetched with the pack, it arrives while the pack is tested, not after.
+	[[gnu::always_inline]] void prefetch_leaf(const Wide_Node& node, int slot) const {
+		prefetch(&wide.triangle_packs[node.first[slot]], sizeof(Triangle_Pack));
+		if (!ANY_HIT) {
+			uint32_t triangles = std::min<uint32_t>(node.count[slot], 4); // the first pack's
+			prefetch(&bvh.primitives[node.start[slot]], triangles * sizeof(Triangle));
+		}
+	}
+
+	// Tests the leaf's triangles against r, lowering r.dist_bounds.y to each closer hit; returns
+	// true where an any-hit query is answered.
+	[[gnu::always_inline]] bool visit(uint32_t first_pack, uint32_t count, Ray& r) {
+		for (uint32_t p = first_pack; p < first_pack + (count + 3) / 4; p++) {
+			const Triangle_Pack& pack = wide.triangle_packs[p];
+			Pack_Hits hits = hit_pack(pack, r);
+			// Candidates the pack cannot decide, and in the fallback every candidate: the lab's test.
+			unsigned undecided = PACK_IS_EXACT && !exact ? 0 : may_hit(hits, r);
+			if (exact) hits.hit = 0;
+			undecided &= ~hits.hit;
+			for (unsigned lanes = undecided; lanes != 0; lanes &= lanes - 1) {
+				uint32_t i = pack.index[__builtin_ctz(lanes)];
+				Trace trace = bvh.primitives[i].hit(r);
+				if (!trace.hit) continue;
+				if (ANY_HIT) return true;
+				best = i, t = r.dist_bounds.y = trace.distance;
+			}
+			for (unsigned lanes = hits.hit; lanes != 0; lanes &= lanes - 1) {
+				int lane = __builtin_ctz(lanes);
+				if constexpr (ANY_HIT) {
+					// The pack's verdict is Triangle::hit's: done, without loading the Triangle.
+					// Otherwise the lab's test confirms it.
+					if (PACK_IS_EXACT || bvh.primitives[pack.index[lane]].hit(r).hit) return true;
+				} else if (hits.t[lane] <= r.dist_bounds.y) { // (an earlier lane may have come closer)
+					best = pack.index[lane], t = r.dist_bounds.y = hits.t[lane];
+				}
+			}
+		}
+		return false;
+	}
+};
+
+// The leaves of a BVH<Instance>: Instance::hit on each object, the closest record kept.
+template<bool ANY_HIT> struct Instance_Leaves {
+	const BVH<Instance>& bvh;
+	Trace closest;
+
+	void prefetch_leaf(const Wide_Node&, int) const {
+	}
+
+	bool visit(uint32_t first, uint32_t count, Ray& r) {
+		for (uint32_t i = first; i < first + count; i++) {
+			closest = Trace::min(closest, bvh.primitives[i].hit(r));
+			if (!closest.hit) continue;
+			if (ANY_HIT) return true;
+			r.dist_bounds.y = closest.distance;
+		}
+		return false;
+	}
+};
+
+// Front to back (handouts/task3_bvh.md §3.3) over the wide nodes: test a node's children four at a
+// time, go down into the nearest child hit and keep the others on a stack, with the t at which the
+// ray enters them; at a leaf, leaves.visit(). The closest-hit query shrinks the ray to each hit it
+// finds; the any-hit query returns at the first, and takes the children hit in slot order: any hit
+// will do, so sorting them buys nothing (the answer is the same in any order). Returns whether an
+// any-hit query found a hit.
+template<bool ANY_HIT, typename Leaves> bool traverse(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
+	struct Child { // a wide node (count 0) or a leaf's primitives
+		uint32_t first, count;
+		float t_enter;
+	};
+	// The children waiting, nearest on top: on the call stack rather than behind a thread-local
+	// lookup, moved to the heap if a deep tree fills it (64 is three times what the benchmark
+	// scenes' rays need; the stress suite has a deeper tree).
+	Child local_stack[64];
+	std::vector<Child> heap_stack;
+	Child* stack = local_stack;
+	size_t capacity = std::size(local_stack), top = 0;
+
+	Ray r = ray; // r.dist_bounds.y shrinks to the closest hit found so far
+	Slab_Ray slab_ray(ray);
+	if (wide.nodes.empty()) return false;
+	Child child{0, 0, ray.dist_bounds.x}; // the root
+
+	while (true) {
+		if (child.count > 0) {
+			if (leaves.visit(child.first, child.count, r)) return true;
+		} else {
+			const Wide_Node& node = wide.nodes[child.first];
+			constexpr int WIDTH = Wide_Node::WIDTH;
+			float t_enter[WIDTH];
+			unsigned mask = hit_children(node, slab_ray, r.dist_bounds, t_enter);
+			if (mask != 0) {
+				if (top + WIDTH > capacity) { // a deep tree: the stack moves to the heap, twice as large
+					if (stack == local_stack) heap_stack.assign(local_stack, local_stack + top);
+					heap_stack.resize(capacity *= 2);
+					stack = heap_stack.data();
+				}
+				auto hit = [&](int slot) { return Child{node.first[slot], node.count[slot], t_enter[slot]}; };
+				for (unsigned found = mask; found != 0; found &= found - 1) { // the leaves found, fetched at once
+					int slot = __builtin_ctz(found);
+					if (node.count[slot] > 0) leaves.prefetch_leaf(node, slot);
+				}
+				int near = __builtin_ctz(mask);
+				mask &= mask - 1;
+				if (mask == 0) { // one child hit (the common case): nothing to order
+					child = hit(near);
+					continue;
+				}
+				if constexpr (ANY_HIT) { // any hit ends the query: no order needed
+					for (; mask != 0; mask &= mask - 1) stack[top++] = hit(__builtin_ctz(mask));
+					child = hit(near);
+					continue;
+				}
+				int far = __builtin_ctz(mask);
+				mask &= mask - 1;
+				if (mask == 0) { // two: the nearer first, the lower slot on a tie (as the sort below)
+					if (t_enter[far] < t_enter[near]) std::swap(near, far);
+					stack[top++] = hit(far);
+					child = hit(near);
+					continue;
+				}
+				// More: insertion sort, nearest first.
+				Child hits[WIDTH] = {hit(near), hit(far)};
+				if (hits[1].t_enter < hits[0].t_enter) std::swap(hits[0], hits[1]);
+				int count = 2;
+				for (; mask != 0; mask &= mask - 1) {
+					Child c = hit(__builtin_ctz(mask));
+					int at = count++;
+					for (; at > 0 && hits[at - 1].t_enter > c.t_enter; at--) hits[at] = hits[at - 1];
+					hits[at] = c;
+				}
+				for (int i = count - 1; i > 0; i--) stack[top++] = hits[i]; // the nearest is popped first
+				child = hits[0];
+				continue;
+			}
+		}
+		// Pop the nearest pending child that still starts before the closest hit.
+		while (top > 0 && stack[top - 1].t_enter > r.dist_bounds.y) top--;
+		if (top == 0) break;
+		child = stack[--top];
+	}
+	return false;
+}
+
+// The closest triangle hit with t in ray.dist_bounds, and that t (NONE and INF_F for a miss).
+struct Closest_Triangle {
+	uint32_t primitive;
+	float t;
+};
+
+Closest_Triangle closest_triangle(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, bool exact) {
+	Triangle_Leaves<false> leaves{bvh, wide, exact};
+	traverse<false>(wide, ray, leaves);
+	return Closest_Triangle{leaves.best, leaves.t};
+}
+
+// The closest triangle's record (its normal, position): Triangle::hit on the whole ray, so that
+// the result is the lab's test's bit for bit. If it misses (only where the pack rounded otherwise:
+// fused multiply-add), the query starts over with `exact`: every candidate to Triangle::hit. The
+// record is one variable returned all the way, so Triangle::hit writes it where the caller wants it.
+Trace record(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, uint32_t best) {
+	Trace trace = bvh.primitives[best].hit(ray);
+	if (!trace.hit) {
+		uint32_t exact = closest_triangle(bvh, wide, ray, true).primitive;
+		if (exact != NONE) trace = bvh.primitives[exact].hit(ray);
+	}
+	return trace;
+}
+
+} // namespace
+
+template<typename Primitive>
+Accelerator<Primitive>::Accelerator(const BVH<Primitive>& bvh) : wide(std::make_shared<const Wide_BVH>(widen(bvh))) {
+}
+
+template<typename Primitive> Trace Accelerator<Primitive>::hit(const BVH<Primitive>& bvh, const Ray& ray) const {
+	if (!wide) return bvh.hit(ray);
+	if constexpr (std::is_same_v<Primitive, Triangle>) {
+		uint32_t best = closest_triangle(bvh, *wide, ray, false).primitive;
+		if (best == NONE) return Trace{};
+		return record(bvh, *wide, ray, best);
+	} else {
+		Instance_Leaves<false> leaves{bvh, Trace{}};
+		traverse<false>(*wide, ray, leaves);
+		return leaves.closest;
+	}
+}
+
+template<typename Primitive> bool Accelerator<Primitive>::occluded(const BVH<Primitive>& bvh, const Ray& ray) const {
+	if (!wide) return bvh.hit(ray).hit;
+	if constexpr (std::is_same_v<Primitive, Triangle>) {
+		Triangle_Leaves<true> leaves{bvh, *wide, false};
+		return traverse<true>(*wide, ray, leaves);
+	} else {
+		Instance_Leaves<true> leaves{bvh, Trace{}};
+		return traverse<true>(*wide, ray, leaves);
+	}
+}
+
+template<typename Primitive> size_t Accelerator<Primitive>::bytes() const {
+	if (!wide) return 0;
+	return wide->nodes.capacity() * sizeof(Wide_Node) + wide->triangle_packs.capacity() * sizeof(Triangle_Pack);
+}
+
+template class Accelerator<Triangle>;
+template class Accelerator<Instance>;
