@@ -1,15 +1,14 @@
 // The convergence benchmark, "run time against error": for each experiment (a scene and two
 // strategies of the renderer that estimate the same image) it renders at spp = 1, 2, 4, ..., max
 // with several seeds, measures the wall time and the relMSE against a high-spp reference, fits the
-// slope of log relMSE against log time (-1 for an unbiased estimator), and compares the strategies'
-// efficiency 1 / (relMSE * time). Writes a CSV of every render and an SVG plot. See README.md.
+// slope of log relMSE against log spp (-1 for an unbiased estimator with independent samples) and
+// against log time, and compares the strategies' efficiency 1 / (relMSE * time). Writes a CSV of
+// every render and an SVG plot. See README.md.
+#include "bench_strategy.h"
 #include "bench_timing.h"
-#include "cli_options.h"
 #include "convergence_metrics.h"
 #include "convergence_plot.h"
 #include "convergence_reference.h"
-#include "render.h"
-#include "scene_loader.h"
 #include "text_file.h"
 
 #include <algorithm>
@@ -21,6 +20,7 @@
 #include <memory>
 #include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -33,31 +33,50 @@ double seconds_since(Clock::time_point start) {
 
 // ---- The experiments ----------------------------------------------------------------------------
 
-// A strategy is a list of the renderer's own flags (framework/cli_options.cpp), so that
-// `pathtracer_reference SCENE FLAGS` renders exactly what the benchmark measures.
-struct Strategy {
-	const char* name;
-	std::vector<std::string> flags;
-};
-
-// Two unbiased strategies for the same image: a baseline and the improvement the lab teaches. The
-// reference is rendered by the improvement, with REFERENCE_FACTOR times the largest spp.
+// Two unbiased strategies for the same image: a baseline and an improvement. The reference is
+// rendered by the improvement with independent samples (its per-pixel variance then measures its
+// own noise, which is subtracted), with REFERENCE_FACTOR times the largest spp.
 struct Experiment {
 	const char* name;
 	const char* scene;
+	const char* compared; // the plot's panel title: what is compared
 	Strategy baseline, improved;
 };
 
+// The lab's estimator before issue 18 (task 4 with task 6's mixture, independent samples, lights
+// chosen uniformly), which the first three experiments vary.
+std::vector<std::string> lab(std::vector<std::string> flags) {
+	std::vector<std::string> all{"--integrator", "mixture", "--sampler", "independent", "--light-choice", "uniform"};
+	all.insert(all.end(), flags.begin(), flags.end());
+	return all;
+}
+
 const std::vector<Experiment> EXPERIMENTS{
-	{"small_light", "scenes/cornell_small_light.json", {"bsdf only", {"--no-light-sampling"}}, {"mixture", {}}},
-	{"sun", "scenes/bunny_sun.json", {"uniform env", {"--env-sampling", "uniform"}},
-	 {"importance env", {"--env-sampling", "importance"}}},
-	{"roulette", "bench/convergence_closed_box.json", {"no roulette", {"--no-roulette"}}, {"roulette", {}}},
+	{"small_light", "scenes/cornell_small_light.json", "small light: BSDF sampling vs task 6's mixture",
+	 {"bsdf only", lab({"--no-light-sampling"})}, {"mixture", lab({})}},
+	{"sun", "scenes/bunny_sun.json", "sun: sky sampled uniformly vs by importance",
+	 {"uniform env", lab({"--env-sampling", "uniform"})}, {"importance env", lab({"--env-sampling", "importance"})}},
+	{"roulette", "bench/convergence_closed_box.json", "closed box: every path to depth 16 vs roulette",
+	 {"no roulette", lab({"--no-roulette"})}, {"roulette", lab({})}},
+	{"integrator", "scenes/cornell_box.json", "Cornell box: task 6's mixture vs NEE with MIS",
+	 {"mixture", {"--integrator", "mixture", "--sampler", "independent"}},
+	 {"nee + mis", {"--integrator", "nee", "--sampler", "independent"}}},
+	{"sampler", "scenes/cornell_box.json", "Cornell box: independent vs low-discrepancy samples",
+	 {"independent", {"--integrator", "nee", "--sampler", "independent"}},
+	 {"sobol", {"--integrator", "nee", "--sampler", "sobol"}}},
+	{"light_choice", "bench/convergence_two_lights.json", "bright and dim light: chosen uniformly vs by power",
+	 {"uniform", {"--integrator", "nee", "--sampler", "independent", "--light-choice", "uniform"}},
+	 {"power", {"--integrator", "nee", "--sampler", "independent", "--light-choice", "power"}}},
+	{"light_choice_sky", "scenes/dragon.json", "lamp under a sky: chosen uniformly vs by power",
+	 {"uniform", {"--integrator", "nee", "--sampler", "independent", "--light-choice", "uniform"}},
+	 {"power", {"--integrator", "nee", "--sampler", "independent", "--light-choice", "power"}}},
 };
 
 constexpr uint32_t REFERENCE_FACTOR = 64;
 constexpr uint64_t REFERENCE_SEED = 0; // the series use seeds 1, 2, ...: independent of it
-constexpr double SLOPE_MIN = -1.2, SLOPE_MAX = -0.8;
+// The slope of log relMSE against log spp: -1 for independent samples; low-discrepancy samples
+// may fall faster.
+constexpr double SLOPE_MIN = -1.3, SLOPE_MAX = -0.8;
 
 // ---- Options ------------------------------------------------------------------------------------
 
@@ -75,16 +94,21 @@ const char* const USAGE =
 	"film (default 64x64) with T threads (default 0 = all cores): --seeds renders (default 8) at N spp, and as\n"
 	"many more at smaller spp as keep the samples per point equal (8 x 64 renders at 1 spp). Measures wall time\n"
 	"and relMSE against a reference of 64 x N spp (cached under the build directory). Prints per strategy the\n"
-	"slope of log relMSE against log time and the efficiency 1 / (relMSE * time); writes DIR/convergence.csv\n"
-	"and DIR/convergence.svg (default DIR: build/bench/convergence). A slope outside [-1.2, -0.8] is an ERROR\n"
-	"(exit status 1) unless the slope against spp is inside (a timing problem) or a few renders carry the\n"
-	"means (a heavy tail): those are WARNINGs (see bench/README.md). Budgets much smaller than the defaults\n"
-	"may not see a heavy tail's rare paths at all, and its curve then looks biased.\n"
+	"slopes of log relMSE against log spp and log time, and the efficiency 1 / (relMSE * time); writes\n"
+	"DIR/convergence.csv and DIR/convergence.svg (default DIR: build/bench/convergence). A slope against spp\n"
+	"outside [-1.3, -0.8] is an ERROR (exit status 1) unless a few renders carry the means (a heavy tail): a\n"
+	"WARNING (see bench/README.md). Slopes against time move with the machine's load: reported, not judged.\n"
+	"Budgets much smaller than the defaults may not see a heavy tail's rare paths at all, and its curve then\n"
+	"looks biased.\n"
 	"\n"
-	"experiments (--experiment NAME runs one):\n"
-	"  small_light  scenes/cornell_small_light.json: bsdf only (--no-light-sampling) vs mixture\n"
-	"  sun          scenes/bunny_sun.json: uniform env vs importance env (--env-sampling uniform|importance)\n"
-	"  roulette     bench/convergence_closed_box.json: no roulette (--no-roulette) vs roulette\n";
+	"experiments (--experiment NAME runs one; each strategy is a list of pathtracer_reference's flags):\n"
+	"  small_light       cornell_small_light: bsdf only (--no-light-sampling) vs task 6's mixture\n"
+	"  sun               bunny_sun: uniform env vs importance env (--env-sampling uniform|importance)\n"
+	"  roulette          bench/convergence_closed_box.json: no roulette (--no-roulette) vs roulette\n"
+	"  integrator        cornell_box: --integrator mixture vs nee\n"
+	"  sampler           cornell_box: --sampler independent vs sobol\n"
+	"  light_choice      bench/convergence_two_lights.json: --light-choice uniform vs power\n"
+	"  light_choice_sky  dragon (a lamp under a sky): --light-choice uniform vs power\n";
 
 [[noreturn]] void usage_error(const std::string& message) {
 	std::fprintf(stderr, "convergence_bench: %s\n\n%s", message.c_str(), USAGE);
@@ -150,42 +174,15 @@ std::vector<Render_Job> render_jobs(const Options& o) {
 
 // ---- Rendering ----------------------------------------------------------------------------------
 
-// A strategy ready to render: its own scene (--env-sampling changes the scene) and settings.
-struct Setup {
-	std::unique_ptr<Scene> scene;
-	Render_Settings settings;
-};
-
-Setup set_up(const Experiment& experiment, const Strategy& strategy, const Options& o) {
-	std::vector<std::string> args{"convergence_bench", experiment.scene, "--width", std::to_string(o.width),
-	                              "--height", std::to_string(o.height)};
-	args.insert(args.end(), strategy.flags.begin(), strategy.flags.end());
-	Cli_Options cli = parse_cli_options(args);
-	Setup setup{std::make_unique<Scene>(load_scene(experiment.scene)), {}};
-	override_environment(*setup.scene, cli);
-	setup.scene->camera.aspect_ratio = float(o.width) / float(o.height); // the film's shape, not the scene's
-	setup.settings = override_settings(setup.scene->settings, cli);
-	return setup;
-}
-
 struct Measurement {
 	double seconds = 0.0; // wall time of render()
 	Render_Error error;
 };
 
-Measurement measure(const Setup& setup, uint32_t spp, uint64_t seed, const Reference& reference, uint32_t threads) {
-	Render_Settings settings = setup.settings;
-	settings.samples = spp;
-	settings.seed = seed;
-	Pathtracer pathtracer(*setup.scene, settings);
-	Render_Options options;
-	options.threads = threads;
-	Clock::time_point start = Clock::now();
-	Film film = render(pathtracer, options);
-	Measurement m;
-	m.seconds = seconds_since(start);
-	m.error = render_error(film, reference);
-	return m;
+Measurement measure(const Strategy_Setup& setup, uint32_t spp, uint64_t seed, const Reference& reference,
+                    uint32_t threads) {
+	Timed_Render render = timed_render(setup, spp, seed, threads);
+	return Measurement{render.seconds, render_error(render.film, reference)};
 }
 
 // ---- Results ------------------------------------------------------------------------------------
@@ -208,7 +205,7 @@ struct Curve {
 		return std::any_of(skew.begin(), skew.end(), carried_by_few);
 	}
 	bool slope_ok() const {
-		return slope_time >= SLOPE_MIN && slope_time <= SLOPE_MAX;
+		return slope_spp >= SLOPE_MIN && slope_spp <= SLOPE_MAX;
 	}
 };
 
@@ -244,12 +241,6 @@ void fit(Curve& curve) {
 	curve.efficiency = median(efficiencies);
 }
 
-std::string joined(const std::vector<std::string>& words) {
-	std::string text;
-	for (const std::string& w : words) text += (text.empty() ? "" : " ") + w;
-	return text;
-}
-
 // One line per render.
 class Csv {
 public:
@@ -258,7 +249,7 @@ public:
 	}
 	void row(const Experiment& e, const Strategy& s, uint32_t spp, uint64_t seed, const Measurement& m, double share) {
 		char line[512];
-		std::snprintf(line, sizeof line, "%s,%s,%s,%u,%llu,%.6g,%.6g,%.6g,%.6g\n", e.name, s.name, e.scene, spp,
+		std::snprintf(line, sizeof line, "%s,%s,%s,%u,%llu,%.6g,%.6g,%.6g,%.6g\n", e.name, s.name.c_str(), e.scene, spp,
 		              static_cast<unsigned long long>(seed), m.seconds, m.error.rel_mse, m.error.variance, share);
 		file << line;
 	}
@@ -272,18 +263,22 @@ private:
 
 // ---- The experiment -----------------------------------------------------------------------------
 
-Cached_Reference reference_for(const Experiment& e, const Setup& best, const Options& o) {
-	Render_Settings settings = best.settings;
+Cached_Reference reference_for(const Experiment& e, const Options& o) {
+	Strategy strategy = e.improved;
+	strategy.flags.insert(strategy.flags.end(), {"--sampler", "independent"}); // the last flag counts
+	Strategy_Setup setup = set_up(e.scene, strategy, o.width, o.height);
+	Render_Settings settings = setup.settings;
 	settings.samples = REFERENCE_FACTOR * o.max_spp;
 	settings.seed = REFERENCE_SEED;
-	std::string identity = read_text_file(e.scene) + "|" + joined(e.improved.flags);
-	Cached_Reference cached = cached_reference(Pathtracer(*best.scene, settings), identity, o.cache, o.threads);
+	std::string identity = read_text_file(e.scene) + "|" + joined(strategy.flags);
+	Cached_Reference cached = cached_reference(Pathtracer(*setup.scene, settings), identity, o.cache, o.threads);
 	if (cached.from_cache)
-		std::printf("reference: %u spp by \"%s\", from the cache %s (delete it after changing the renderer)\n",
-		            settings.samples, e.improved.name, cached.path.c_str());
+		std::printf("reference: %u spp by \"%s\", independent samples, from the cache %s (delete it after changing the "
+		            "renderer)\n",
+		            settings.samples, e.improved.name.c_str(), cached.path.c_str());
 	else
-		std::printf("reference: %u spp by \"%s\", rendered in %.1f s, cached in %s\n", settings.samples,
-		            e.improved.name, cached.seconds, cached.path.c_str());
+		std::printf("reference: %u spp by \"%s\", independent samples, rendered in %.1f s, cached in %s\n",
+		            settings.samples, e.improved.name.c_str(), cached.seconds, cached.path.c_str());
 	return cached;
 }
 
@@ -291,13 +286,14 @@ Result run_experiment(const Experiment& e, const Options& o, Csv& csv) {
 	std::printf("\n== %s: %s, %u x %u, spp 1 to %u; %u renders at %u spp to %u at 1 spp ==\n", e.name, e.scene,
 	            o.width, o.height, o.max_spp, o.seeds, o.max_spp, renders_at(1, o));
 	const Strategy* strategies[2] = {&e.baseline, &e.improved};
-	Setup setups[2] = {set_up(e, e.baseline, o), set_up(e, e.improved, o)};
-	Reference reference = reference_for(e, setups[1], o).reference;
+	Strategy_Setup setups[2] = {set_up(e.scene, e.baseline, o.width, o.height),
+	                            set_up(e.scene, e.improved, o.width, o.height)};
+	Reference reference = reference_for(e, o).reference;
 	Result result{&e, {}, reference_rel_mse(reference)};
 	std::printf("the reference's own noise adds %.3g to every relMSE; it is subtracted before fitting\n",
 	            result.reference_share);
 
-	for (const Setup& setup : setups) measure(setup, 1, 0, reference, o.threads); // warm-up, not timed
+	for (const Strategy_Setup& setup : setups) measure(setup, 1, 0, reference, o.threads); // warm-up, not timed
 	std::vector<std::vector<Measurement>> runs[2]; // [strategy][level of the series]
 	std::vector<Render_Job> jobs = render_jobs(o);
 	std::printf("rendering %zu images per strategy, in a shuffled order...", jobs.size());
@@ -312,7 +308,7 @@ Result run_experiment(const Experiment& e, const Options& o, Csv& csv) {
 	}
 
 	std::printf(" %.0f s\n%6s", seconds_since(start), "spp");
-	for (const Strategy* s : strategies) std::printf("   %16s: seconds   relMSE", s->name);
+	for (const Strategy* s : strategies) std::printf("   %16s: seconds   relMSE", s->name.c_str());
 	std::printf("\n");
 	for (size_t level = 0; level < runs[0].size(); level++) {
 		uint32_t spp = 1u << level;
@@ -332,35 +328,37 @@ Result run_experiment(const Experiment& e, const Options& o, Csv& csv) {
 
 // ---- Report -------------------------------------------------------------------------------------
 
-// An unbiased estimator's relMSE falls as 1 / spp, and so as 1 / time. A slope against time
-// outside [SLOPE_MIN, SLOPE_MAX] is an ERROR unless it has another explanation:
-// - "timing": the slope against spp is inside: the error converges, the times do not grow in
-//   proportion to spp (other processes on the machine, a render too short to time);
-// - "heavy tail": a few renders carry the mean of some point: rare, bright paths that the
-//   series has too few samples to average, so the slope cannot be judged at this budget.
-// Bias shows differently: the renders agree with each other, and the curve flattens. A heavy tail
-// is worth knowing about even when the slope passes: "ok, heavy tail".
+// An unbiased estimator's relMSE falls as 1 / spp with independent samples (low-discrepancy samples
+// may fall faster). A slope against spp outside [SLOPE_MIN, SLOPE_MAX] is an ERROR unless a few
+// renders carry the mean of some point ("heavy tail": rare, bright paths that the series has too
+// few samples to average, so the slope cannot be judged at this budget). Bias shows differently:
+// the renders agree with each other, and the curve flattens. A heavy tail is worth knowing about
+// even when the slope passes: "ok, heavy tail". Slopes against time follow the machine's load and
+// are only reported.
 const char* verdict(const Curve& c) {
 	if (c.slope_ok()) return c.heavy_tailed() ? "ok, heavy tail" : "ok";
-	if (c.slope_spp >= SLOPE_MIN && c.slope_spp <= SLOPE_MAX) return "timing";
 	return c.heavy_tailed() ? "heavy tail" : "ERROR";
 }
 
+double ratio(const Result& r) {
+	return r.curves[1].efficiency / r.curves[0].efficiency;
+}
+
 void print_table(const std::vector<Result>& results) {
-	std::printf("\n%-12s %-15s %-26s %10s %9s %11s %8s  %s\n", "experiment", "strategy", "renderer flags", "slope/time",
-	            "slope/spp", "efficiency", "ratio", "slope");
+	std::printf("\n%-17s %-15s %-62s %9s %10s %11s %8s  %s\n", "experiment", "strategy", "renderer flags",
+	            "slope/spp", "slope/time", "efficiency", "ratio", "slope");
 	for (const Result& r : results) {
 		const Strategy* strategies[2] = {&r.experiment->baseline, &r.experiment->improved};
 		for (int k = 0; k < 2; k++) {
 			const Curve& c = r.curves[k];
-			std::string flags = strategies[k]->flags.empty() ? "(default)" : joined(strategies[k]->flags);
-			char ratio[32] = "";
-			if (k == 1) std::snprintf(ratio, sizeof ratio, "%.3gx", c.efficiency / r.curves[0].efficiency);
-			std::printf("%-12s %-15s %-26s %10.3f %9.3f %11.4g %8s  %s\n", k == 0 ? r.experiment->name : "",
-			            strategies[k]->name, flags.c_str(), c.slope_time, c.slope_spp, c.efficiency, ratio, verdict(c));
+			char gain[32] = "";
+			if (k == 1) std::snprintf(gain, sizeof gain, "%.3gx", ratio(r));
+			std::printf("%-17s %-15s %-62s %9.3f %10.3f %11.4g %8s  %s\n", k == 0 ? r.experiment->name : "",
+			            strategies[k]->name.c_str(), joined(strategies[k]->flags).c_str(), c.slope_spp, c.slope_time,
+			            c.efficiency, gain, verdict(c));
 		}
 	}
-	std::printf("(slopes: least squares of log relMSE on log seconds and on log spp; efficiency: median over the\n"
+	std::printf("(slopes: least squares of log relMSE on log spp and on log seconds; efficiency: median over the\n"
 	            " series of 1 / (relMSE * seconds) in 1/s; ratio: efficiency of the second strategy / the first)\n");
 }
 
@@ -371,38 +369,47 @@ bool check_slopes(const std::vector<Result>& results) {
 		const Strategy* strategies[2] = {&r.experiment->baseline, &r.experiment->improved};
 		for (int k = 0; k < 2; k++) {
 			const Curve& c = r.curves[k];
-			std::string v = verdict(c);
 			if (c.slope_ok()) continue;
-			const char* why = v == "timing"       ? "the error converges, but the times do not grow in proportion to spp "
-			                                        "(is the machine busy?)"
-			                  : v == "heavy tail" ? "a few renders carry its means (rare bright paths: a heavy tail); "
-			                                        "more samples per point would tell whether it converges"
-			                                      : "the renders agree, yet the error does not fall as 1 / spp: look for bias";
-			std::printf("%s: %s / %s: slope %.3f against time is outside [%.1f, %.1f] (against spp: %.3f): %s\n",
-			            v == "ERROR" ? "ERROR" : "WARNING", r.experiment->name, strategies[k]->name, c.slope_time,
-			            SLOPE_MIN, SLOPE_MAX, c.slope_spp, why);
-			ok = ok && v != "ERROR";
+			bool error = std::string(verdict(c)) == "ERROR";
+			const char* why = error ? "the renders agree, yet the error does not fall as 1 / spp: look for bias"
+			                        : "a few renders carry its means (rare bright paths: a heavy tail); more samples "
+			                          "per point would tell whether it converges";
+			std::printf("%s: %s / %s: slope %.3f against spp is outside [%.1f, %.1f]: %s\n", error ? "ERROR" : "WARNING",
+			            r.experiment->name, strategies[k]->name.c_str(), c.slope_spp, SLOPE_MIN, SLOPE_MAX, why);
+			ok = ok && !error;
 		}
 	}
 	return ok;
 }
 
-std::vector<Plot_Panel> plot_panels(const std::vector<Result>& results) {
-	std::vector<Plot_Panel> panels;
+Plot convergence_plot(const std::vector<Result>& results, const Options& o) {
+	Plot plot;
+	plot.title = "Run time against error: relMSE against samples per pixel, two strategies per panel";
+	char subtitle[256];
+	std::snprintf(subtitle, sizeof subtitle,
+	              "%u x %u pixels, spp 1 to %u, %u x %u samples per point; %s threads; efficiency = 1 / (relMSE x "
+	              "wall time of the render), median over the series",
+	              o.width, o.height, o.max_spp, o.seeds, o.max_spp,
+	              o.threads ? std::to_string(o.threads).c_str() : std::to_string(std::thread::hardware_concurrency()).c_str());
+	plot.subtitle = subtitle;
 	for (const Result& r : results) {
-		Plot_Panel panel{std::string(r.experiment->name) + ": " + r.experiment->scene, {}};
-		const Strategy* strategies[2] = {&r.experiment->baseline, &r.experiment->improved};
+		const Experiment& e = *r.experiment;
+		char headline[128];
+		std::snprintf(headline, sizeof headline, "%s: %.3gx the efficiency of %s", e.improved.name.c_str(), ratio(r),
+		              e.baseline.name.c_str());
+		Plot_Panel panel{e.compared, headline, {}};
+		const Strategy* strategies[2] = {&e.baseline, &e.improved};
 		for (int k = 0; k < 2; k++) {
-			char label[96];
-			std::snprintf(label, sizeof label, "%s (slope %.2f)", strategies[k]->name, r.curves[k].slope_time);
 			const Curve& c = r.curves[k];
+			char label[96];
+			std::snprintf(label, sizeof label, "%s: slope %.2f", strategies[k]->name.c_str(), c.slope_spp);
 			std::vector<bool> hollow;
 			for (double skew : c.skew) hollow.push_back(Curve::carried_by_few(skew));
-			panel.series.push_back({label, c.seconds, c.rel_mse, hollow});
+			panel.series.push_back({label, c.spp, c.rel_mse, hollow});
 		}
-		panels.push_back(panel);
+		plot.panels.push_back(panel);
 	}
-	return panels;
+	return plot;
 }
 
 int run(const Options& o) {
@@ -419,11 +426,7 @@ int run(const Options& o) {
 	for (const Experiment* e : chosen) results.push_back(run_experiment(*e, o, csv));
 
 	print_table(results);
-	char title[160];
-	std::snprintf(title, sizeof title,
-	              "relMSE against render time (%u x %u pixels, spp 1 to %u, %u x %u samples per point)", o.width,
-	              o.height, o.max_spp, o.seeds, o.max_spp);
-	write_convergence_svg(svg_path, title, plot_panels(results));
+	write_convergence_svg(svg_path, convergence_plot(results, o));
 	if (!csv.good()) std::printf("ERROR: could not write %s\n", csv_path.c_str());
 	std::printf("\nwrote %s\nwrote %s\ntotal time %.0f s\n", csv_path.c_str(), svg_path.c_str(), seconds_since(start));
 	return check_slopes(results) && csv.good() ? 0 : 1;

@@ -10,14 +10,14 @@
 
 namespace {
 
-constexpr double PANEL_W = 420, PANEL_H = 330, TITLE_H = 36, ROW = 17;
-constexpr double LEFT = 66, RIGHT = 32, TOP = 34, BOTTOM = 48; // the plot area inside a panel
+constexpr double PANEL_W = 440, PANEL_H = 330, TITLE_H = 58, ROW = 17;
+constexpr double LEFT = 66, RIGHT = 32, TOP = 52, BOTTOM = 48; // the plot area inside a panel
 
-// Below the panels: one legend row per strategy, the slope -1 line and the ring.
+// Below each panel: one legend row per strategy, the slope -1 line and the ring.
 double legend_height(const std::vector<Plot_Panel>& panels) {
 	size_t rows = 0;
 	for (const Plot_Panel& p : panels) rows = std::max(rows, p.series.size() + 2);
-	return ROW * double(rows) + 12;
+	return ROW * double(rows) + 16;
 }
 const char* const COLOURS[] = {"#c0392b", "#1f6fb4", "#2e8b57", "#8e44ad", "#d68910"};
 
@@ -115,9 +115,9 @@ void draw_series(std::string& svg, const Axes& a, const Plot_Series& s, const ch
 	}
 }
 
-// Under the panel's plot area, left-aligned with it.
-void draw_legend(std::string& svg, const Axes& a, const std::vector<Plot_Series>& series) {
-	double x = a.left, y = TITLE_H + PANEL_H;
+// Under the panel's plot area (whose top edge is at `bottom`), left-aligned with it.
+void draw_legend(std::string& svg, const Axes& a, double bottom, const std::vector<Plot_Series>& series) {
+	double x = a.left, y = bottom;
 	for (size_t i = 0; i < series.size() + 2; i++) {
 		double cy = y + ROW * double(i) + 8;
 		bool ideal = i == series.size(), ring = i == series.size() + 1;
@@ -133,36 +133,47 @@ void draw_legend(std::string& svg, const Axes& a, const std::vector<Plot_Series>
 	}
 }
 
-void draw_panel(std::string& svg, const Plot_Panel& panel, size_t index) {
+// Panel `index` of the grid, whose cells are `cell_h` high below the title.
+void draw_panel(std::string& svg, const Plot& plot, size_t index, double cell_h) {
+	const Plot_Panel& panel = plot.panels[index];
 	std::vector<double> xs, ys;
 	for (const Plot_Series& s : panel.series) {
 		xs.insert(xs.end(), s.x.begin(), s.x.end());
 		ys.insert(ys.end(), s.y.begin(), s.y.end());
 	}
-	double left = PANEL_W * double(index);
-	Axes a{left + LEFT, TITLE_H + TOP, PANEL_W - LEFT - RIGHT, PANEL_H - TOP - BOTTOM, covering(xs), covering(ys)};
+	double left = PANEL_W * double(index % plot.columns), top = TITLE_H + cell_h * double(index / plot.columns);
+	Axes a{left + LEFT, top + TOP, PANEL_W - LEFT - RIGHT, PANEL_H - TOP - BOTTOM, covering(xs), covering(ys)};
 	std::string clip = "plot" + std::to_string(index);
 	add(svg, "<clipPath id=\"%s\"><rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\"/></clipPath>\n",
 	    clip.c_str(), a.left, a.top, a.width, a.height);
 	add(svg, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\" font-weight=\"bold\">%s</text>\n", left + PANEL_W / 2,
-	    TITLE_H + 20, panel.title.c_str());
-	draw_axes(svg, a, "render time [s]", "relMSE");
+	    top + 20, panel.title.c_str());
+	add(svg, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\" fill=\"#333\">%s</text>\n", left + PANEL_W / 2,
+	    top + 38, panel.headline.c_str());
+	draw_axes(svg, a, plot.x_label, "relMSE");
 	for (size_t i = 0; i < panel.series.size(); i++) draw_series(svg, a, panel.series[i], COLOURS[i % 5], clip);
-	draw_legend(svg, a, panel.series);
+	draw_legend(svg, a, top + PANEL_H, panel.series);
 }
 
 } // namespace
 
-void write_convergence_svg(const std::string& path, const std::string& title, const std::vector<Plot_Panel>& panels) {
-	double width = PANEL_W * double(panels.size()), height = TITLE_H + PANEL_H + legend_height(panels);
+void write_convergence_svg(const std::string& path, const Plot& plot) {
+	size_t columns = std::max<size_t>(1, std::min(plot.columns, plot.panels.size()));
+	size_t rows = (plot.panels.size() + columns - 1) / columns;
+	double cell_h = PANEL_H + legend_height(plot.panels);
+	double width = PANEL_W * double(columns), height = TITLE_H + cell_h * double(rows);
+	Plot grid = plot;
+	grid.columns = columns;
 	std::string svg;
 	add(svg, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\" "
 	         "font-family=\"sans-serif\" font-size=\"12\">\n",
 	    width, height, width, height);
 	add(svg, "<rect width=\"%.0f\" height=\"%.0f\" fill=\"white\"/>\n", width, height);
-	add(svg, "<text x=\"%.1f\" y=\"24\" text-anchor=\"middle\" font-size=\"15\" font-weight=\"bold\">%s</text>\n",
-	    width / 2, title.c_str());
-	for (size_t i = 0; i < panels.size(); i++) draw_panel(svg, panels[i], i);
+	add(svg, "<text x=\"%.1f\" y=\"24\" text-anchor=\"middle\" font-size=\"16\" font-weight=\"bold\">%s</text>\n",
+	    width / 2, plot.title.c_str());
+	add(svg, "<text x=\"%.1f\" y=\"44\" text-anchor=\"middle\" font-size=\"12\" fill=\"#333\">%s</text>\n", width / 2,
+	    plot.subtitle.c_str());
+	for (size_t i = 0; i < plot.panels.size(); i++) draw_panel(svg, grid, i, cell_h);
 	svg += "</svg>\n";
 
 	std::filesystem::path parent = std::filesystem::path(path).parent_path();

@@ -19,7 +19,8 @@ std::string cache_name(const Render_Settings& s, const std::string& identity) {
 	std::string key = identity + "|" + std::to_string(s.width) + "x" + std::to_string(s.height) + "|spp " +
 	                  std::to_string(s.samples) + "|depth " + std::to_string(s.max_depth) + "|seed " +
 	                  std::to_string(s.seed) + "|lights " + std::to_string(s.light_sampling) + "|roulette " +
-	                  std::to_string(s.russian_roulette);
+	                  std::to_string(s.russian_roulette) + "|sampler " + sampler_name(s.sampler) + "|integrator " +
+	                  std::to_string(int(s.integrator)) + "|light choice " + std::to_string(int(s.light_choice));
 	char name[64];
 	std::snprintf(name, sizeof name, "reference-%016llx", static_cast<unsigned long long>(fnv1a(key)));
 	return name;

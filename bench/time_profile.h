@@ -38,7 +38,7 @@ private:
 	void begin(const Light_Sampled&) override {
 		started(light_samples);
 	}
-	void end(const Light_Sampled&, const Light_Sample&) override {
+	void end(const Light_Sampled&, const Chosen_Light&) override {
 		finished(light_samples);
 	}
 	void begin(const Light_Pdf&) override {

@@ -67,8 +67,11 @@ void report(const Film& film, const Render_Settings& settings, View view, double
 	char time[32];
 	std::snprintf(time, sizeof time, "%.3f s", seconds);
 	out << "rendered " << settings.width << " x " << settings.height << " pixels, " << settings.samples
-	    << (settings.samples == 1 ? " sample" : " samples") << " each, view " << view_name(view) << ", in " << time
-	    << "\n";
+	    << (settings.samples == 1 ? " sample" : " samples") << " each, view " << view_name(view);
+	if (view == View::path)
+		out << ", integrator " << (settings.integrator == Integrator::nee ? "nee" : "mixture") << ", sampler "
+		    << sampler_name(settings.sampler);
+	out << ", in " << time << "\n";
 	out << "speed: " << with_unit(samples / std::max(seconds, 1e-9)) << " samples/s\n";
 	out << "non-finite samples: " << film.non_finite() << "\n";
 }
@@ -106,13 +109,15 @@ void follow(const Scene& scene, const Cli_Options& options, std::ostream& out) {
 
 } // namespace
 
-int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err, bool err_is_terminal) {
+int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err, bool err_is_terminal,
+            Integrator integrator) {
 	try {
 		if (wants_help(args)) {
 			out << cli_usage(args);
 			return 0;
 		}
 		Cli_Options options = parse_cli_options(args);
+		if (!options.integrator) options.integrator = integrator;
 		Scene scene = load_scene(options.scene);
 		override_scene(scene, options);
 		if (options.follow_pixel) {

@@ -2,6 +2,8 @@
 // The renderer's command line (programs pathtracer_reference and pathtracer_student):
 //   pathtracer_reference SCENE.json [options]        (--help lists the options and views)
 // It is a function so tests can run it without starting a process.
+#include "scene.h"
+
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -12,6 +14,7 @@
 // and --quiet is not given.
 //
 // Every option and the scene are checked before rendering, so bad input writes no file.
-// Returns the exit status: 0 on success, 1 on any error.
+// Returns the exit status: 0 on success, 1 on any error. `integrator` is the program's default
+// for --integrator (framework/cli/main.cpp).
 int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
-            bool err_is_terminal = false);
+            bool err_is_terminal = false, Integrator integrator = Integrator::mixture);

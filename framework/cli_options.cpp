@@ -63,6 +63,22 @@ bool env_sampling_named(const std::string& option, const std::string& name) {
 	return name == "importance";
 }
 
+Sampler sampler_named(const std::string& option, const std::string& name) {
+	Sampler sampler;
+	if (!parse_sampler(name, sampler)) throw Input_Error(option + ": expected sobol or independent, got '" + name + "'");
+	return sampler;
+}
+
+Integrator integrator_named(const std::string& option, const std::string& name) {
+	if (name != "nee" && name != "mixture") throw Input_Error(option + ": expected nee or mixture, got '" + name + "'");
+	return name == "nee" ? Integrator::nee : Integrator::mixture;
+}
+
+Light_Choice light_choice_named(const std::string& option, const std::string& name) {
+	if (name != "power" && name != "uniform") throw Input_Error(option + ": expected power or uniform, got '" + name + "'");
+	return name == "power" ? Light_Choice::power : Light_Choice::uniform;
+}
+
 View view_named(const std::string& option, const std::string& name) {
 	View view;
 	if (!parse_view(name, view)) {
@@ -124,6 +140,19 @@ const std::vector<Option>& option_table() {
 		 "uniform or importance: how task 7 samples the scene's environment image (default: the scene's "
 		 "\"importance_sampling\", true if absent)",
 		 [](auto& o, auto& name, auto& v) { o.env_importance_sampling = env_sampling_named(name, v); }},
+		{"--sampler", "NAME",
+		 "sobol (default: low-discrepancy, Owen-scrambled Sobol' points) or independent (PCG32): the random "
+		 "numbers of every sample; same image, other noise",
+		 [](auto& o, auto& name, auto& v) { o.sampler = sampler_named(name, v); }},
+		{"--integrator", "NAME",
+		 "nee (next-event estimation with MIS: a shadow ray to a light at every bounce; pathtracer_reference's "
+		 "default) or mixture (task 4 with task 6's one-sample mixture; pathtracer_student's default, since nee "
+		 "runs task 6's optional extension); same image, other noise",
+		 [](auto& o, auto& name, auto& v) { o.integrator = integrator_named(name, v); }},
+		{"--light-choice", "HOW",
+		 "power (default: each light in proportion to the power it emits) or uniform: how light sampling "
+		 "chooses a light; same image, other noise",
+		 [](auto& o, auto& name, auto& v) { o.light_choice = light_choice_named(name, v); }},
 		{"--quiet", nullptr, "no progress bar and no summary (errors and warnings are still printed)",
 		 [](auto& o, auto&, auto&) { o.quiet = true; }},
 		{"--help", nullptr, "print this help and exit", [](auto&, auto&, auto&) {}},
@@ -235,6 +264,9 @@ Render_Settings override_settings(Render_Settings settings, const Cli_Options& o
 	settings.seed = options.seed.value_or(settings.seed);
 	settings.light_sampling = settings.light_sampling && options.light_sampling;
 	settings.russian_roulette = settings.russian_roulette && options.russian_roulette;
+	settings.sampler = options.sampler;
+	settings.integrator = options.integrator.value_or(settings.integrator);
+	settings.light_choice = options.light_choice.value_or(settings.light_choice);
 	if (uint64_t(settings.width) * settings.height > Render_Settings::MAX_PIXELS) {
 		throw Input_Error("--width/--height: expected at most " + std::to_string(Render_Settings::MAX_PIXELS) +
 		                  " pixels (e.g. 4096 x 4096), got " + std::to_string(settings.width) + " x " +

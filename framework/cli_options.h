@@ -19,9 +19,13 @@ struct Cli_Options {
 	View view = View::path;
 	float exposure = 0.0f; // stops, for the PNG
 	bool quiet = false;
-	// Strategy switches (bench/README.md): --no-light-sampling, --no-roulette, --env-sampling.
+	// Strategy switches (bench/README.md): --no-light-sampling, --no-roulette, --env-sampling,
+	// --sampler, --integrator, --light-choice.
 	bool light_sampling = true, russian_roulette = true;
 	std::optional<bool> env_importance_sampling; // unset: as the scene says
+	Sampler sampler = Sampler::sobol;             // renders default to low-discrepancy samples
+	std::optional<Integrator> integrator;        // unset: the program's default (run_cli)
+	std::optional<Light_Choice> light_choice;    // unset: the settings' (by power)
 	// --follow-pixel X,Y: print the life of that pixel's rays instead of rendering an image.
 	std::optional<std::pair<uint32_t, uint32_t>> follow_pixel;
 	uint32_t follow_samples = 1;

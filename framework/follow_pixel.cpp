@@ -8,7 +8,7 @@ void follow_pixel(const Pathtracer& pathtracer, uint32_t x, uint32_t y, uint32_t
 	    << ", max_depth " << settings.max_depth << "\n";
 	Lifecycle_Recorder recorder;
 	for (uint32_t s = 0; s < samples; s++) {
-		RNG rng = RNG::for_sample(settings.seed, index, s); // the same generator render() uses
+		RNG rng = RNG::for_sample(settings.seed, index, s, settings.sampler); // as render() does
 		pathtracer.trace_pixel(x, y, rng);
 		out << "sample " << s << ": ";
 		recorder.print(out, pathtracer.scene.material_names);

@@ -9,6 +9,7 @@ Instance::Instance(std::variant<Sphere, Tri_Mesh> shape_, Mat4 to_world_, uint32
 	// A transform that reverses orientation (negative determinant, e.g. a scale of -1) turns the
 	// shape inside out, as in pbrt: its normals, and so its front side, face the other way.
 	if (glm::determinant(Mat3(to_world_)) < 0.0f) normal_to_world = -normal_to_world;
+	identity = to_world_ == Mat4(1.0f);
 	BBox local = std::visit([](const auto& s) { return s.bbox(); }, shape);
 	if (local.empty()) return;
 	// The world box of a transformed box: enclose its eight transformed corners.
@@ -20,14 +21,16 @@ Instance::Instance(std::variant<Sphere, Tri_Mesh> shape_, Mat4 to_world_, uint32
 }
 
 Trace Instance::hit(const Ray& ray) const {
-	// An affine map keeps the ray parameter: to_local(o + t d) = to_local(o) + t * A d.
-	Ray local(transform_point(to_local, ray.point), transform_direction(to_local, ray.dir), ray.dist_bounds,
-	          ray.depth);
+	// An affine map keeps the ray parameter: to_local(o + t d) = to_local(o) + t * A d. An object
+	// placed where it was modelled (the identity) needs no transform.
+	Ray local = identity ? ray
+	                     : Ray(transform_point(to_local, ray.point), transform_direction(to_local, ray.dir),
+	                           ray.dist_bounds, ray.depth);
 	Trace trace = std::visit([&](const auto& s) { return s.hit(local); }, shape);
 	if (trace.hit) {
 		trace.origin = ray.point;
 		trace.position = ray.at(trace.distance);
-		trace.normal = glm::normalize(normal_to_world * trace.normal);
+		trace.normal = glm::normalize(identity ? trace.normal : normal_to_world * trace.normal);
 		trace.object = index;
 		trace.material = material;
 	}

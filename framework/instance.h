@@ -22,5 +22,6 @@ struct Instance {
 	Mat3 normal_to_world{1.0f}; // inverse transpose of the linear part
 	uint32_t material = 0;
 	uint32_t index = 0; // position in the scene description
+	bool identity = false; // to_world is the identity: hit() skips the transforms
 	BBox world_bbox;
 };

@@ -99,7 +99,7 @@ void Lifecycle_Recorder::end(const Closest_Hit&, const Trace& hit) {
 	if (current) current->hit = hit;
 }
 
-void Lifecycle_Recorder::end(const Light_Sampled&, const Light_Sample& sample) {
+void Lifecycle_Recorder::end(const Light_Sampled&, const Chosen_Light& sample) {
 	event("light sample (" +
 	      (sample.environment ? std::string("environment") : "area light " + std::to_string(sample.light)) +
 	      "): direction " + format_vec(sample.direction));

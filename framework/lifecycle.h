@@ -37,7 +37,7 @@ private:
 	void begin(const Ray_Traced& traced) override;
 	void end(const Ray_Traced&, Spectrum radiance) override;
 	void end(const Closest_Hit&, const Trace& hit) override;
-	void end(const Light_Sampled&, const Light_Sample& sample) override;
+	void end(const Light_Sampled&, const Chosen_Light& sample) override;
 	void end(const Light_Pdf& query, float pdf) override;
 	void end(const BSDF_Sampled& query, const Scatter& scatter) override;
 	void end(const BSDF_Evaluated& query, Spectrum f) override;

@@ -12,6 +12,7 @@
 
 struct Light_Triangle {
 	Vec3 p0, p1, p2;
+	Vec3 normal; // unit, cross(p1 - p0, p2 - p0) normalized: its front side
 };
 
 struct Area_Light {
@@ -19,7 +20,9 @@ struct Area_Light {
 	std::vector<float> cdf;                // running sum of triangle areas
 	Vec3 center{0.0f};                     // a sphere light (when triangles is empty)
 	float radius = 0.0f;
+	bool inside_out = false;               // a sphere turned inside out (emits towards its centre)
 	float area = 0.0f;
+	uint32_t material = 0;                 // its emission is this material's
 };
 
 class Area_Lights {
@@ -35,6 +38,25 @@ public:
 	// The solid-angle density of sample(i, ., from) producing `dir` (unit).
 	float pdf(size_t i, Vec3 from, Vec3 dir) const;
 
+	// For next-event estimation (Pathtracer::sample_light) and the choice of a light by power
+	// (light_distribution.h): a point chosen as sample() chooses it, with the unit normal of the
+	// side it emits from; the solid-angle density, seen from `from`, of choosing that point,
+	// dist^2 / (|cos theta_light| area); the light an object is (-1: none); a light's area and
+	// material.
+	struct Point {
+		Vec3 position, normal;
+	};
+	Point sample_point(size_t i, RNG& rng) const;
+	float point_pdf(size_t i, Vec3 from, Vec3 point, Vec3 normal) const;
+	int light_of(uint32_t object) const;
+	float area(size_t i) const {
+		return lights[i].area;
+	}
+	uint32_t material(size_t i) const {
+		return lights[i].material;
+	}
+
 private:
 	std::vector<Area_Light> lights;
+	std::vector<int> light_of_object; // by object index (Instance::index)
 };

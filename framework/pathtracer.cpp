@@ -1,6 +1,7 @@
 #include "pathtracer.h"
 #include "bvh_visits.h"
 #include "frame.h"
+#include "nee_integrator.h"
 #include "render_observer.h"
 
 #include <array>
@@ -44,10 +45,12 @@ const char* view_name(View view) {
 }
 
 Pathtracer::Pathtracer(const Scene& scene_, Render_Settings settings_, View view_)
-	: scene(scene_), settings(settings_), view(view_) {
+	: scene(scene_), settings(settings_), view(view_), light_distribution(scene_, settings_.light_choice) {
 }
 
 Spectrum Pathtracer::trace(RNG& rng, const Ray& ray) const {
+	if (view == View::path && settings.integrator == Integrator::nee) return trace_nee(*this, rng, ray);
+	rng.begin_vertex(ray.depth);
 	return observe<Ray_Traced>(
 		[&] {
 			if (view != View::path) return debug_view(ray);
@@ -79,33 +82,57 @@ Spectrum Pathtracer::debug_view(const Ray& ray) const {
 	}
 }
 
-// Lights for sampling: every emissive object, and the environment. One is chosen uniformly.
-namespace {
-size_t light_count(const Scene& scene) {
-	return scene.area_lights.count() + (scene.environment ? 1 : 0);
-}
-} // namespace
-
+// Lights for sampling: every emissive object, and the environment. light_distribution chooses one.
 // settings.light_sampling = false (--no-light-sampling) hides the lights from task 6, which then
 // samples the BSDF only: the same image, by another estimator.
 bool Pathtracer::has_lights() const {
 	return settings.light_sampling && light_count(scene) > 0;
 }
 
-Vec3 Pathtracer::sample_area_lights(RNG& rng, Vec3 from) const {
-	if (!has_lights()) {
-		throw std::logic_error("sample_area_lights: this scene has no lights; check has_lights() before "
-		                       "sampling them (handout §6.2)");
+namespace {
+void require_lights(const Pathtracer& pt, const char* function) {
+	if (!pt.has_lights()) {
+		throw std::logic_error(std::string(function) + ": this scene has no lights; check has_lights() before "
+		                                               "sampling them (handout §6.2)");
 	}
+}
+} // namespace
+
+Vec3 Pathtracer::sample_area_lights(RNG& rng, Vec3 from) const {
+	require_lights(*this, "sample_area_lights");
 	return observe<Light_Sampled>(
 		[&] {
-			uint32_t i = rng.integer(uint32_t(light_count(scene)));
-			if (i < scene.area_lights.count()) return Light_Sample{scene.area_lights.sample(i, rng, from), i, false};
+			uint32_t i = uint32_t(light_distribution.choose(rng));
+			if (i < scene.area_lights.count()) return Chosen_Light{scene.area_lights.sample(i, rng, from), i, false};
 			Vec2 u = rng.unit2();
-			return Light_Sample{std::visit([&](const auto& env) { return env.sample(u); }, *scene.environment), i, true};
+			return Chosen_Light{std::visit([&](const auto& env) { return env.sample(u); }, *scene.environment), i, true};
 		},
 		from)
 		.direction;
+}
+
+// The same choices as sample_area_lights, and what next-event estimation needs besides: where the
+// sampled point is, what it emits towards `from`, and the density of choosing it.
+Light_Sample Pathtracer::sample_light(RNG& rng, Vec3 from) const {
+	require_lights(*this, "sample_light");
+	size_t i = light_distribution.choose(rng);
+	float chosen = light_distribution.probability(i);
+	Light_Sample sample;
+	if (i < scene.area_lights.count()) {
+		Area_Lights::Point point = scene.area_lights.sample_point(i, rng);
+		sample.direction = glm::normalize(point.position - from);
+		sample.distance = glm::length(point.position - from);
+		sample.pdf = chosen * scene.area_lights.point_pdf(i, from, point.position, point.normal);
+		// Emission is one-sided (Material::emitted): from the side the light's normal points to.
+		bool front = glm::dot(point.normal, sample.direction) < 0.0f;
+		sample.radiance = front ? scene.materials[scene.area_lights.material(i)].emission : Spectrum{0.0f};
+	} else {
+		Vec2 u = rng.unit2();
+		sample.direction = std::visit([&](const auto& env) { return env.sample(u); }, *scene.environment);
+		sample.pdf = chosen * std::visit([&](const auto& env) { return env.pdf(sample.direction); }, *scene.environment);
+		sample.radiance = scene.environment_radiance(sample.direction);
+	}
+	return sample;
 }
 
 float Pathtracer::area_lights_pdf(Vec3 from, Vec3 dir) const {
@@ -113,9 +140,16 @@ float Pathtracer::area_lights_pdf(Vec3 from, Vec3 dir) const {
 	return observe<Light_Pdf>(
 		[&] {
 			float pdf = 0.0f;
-			for (size_t i = 0; i < scene.area_lights.count(); i++) pdf += scene.area_lights.pdf(i, from, dir);
-			if (scene.environment) pdf += std::visit([&](const auto& env) { return env.pdf(dir); }, *scene.environment);
-			return pdf / float(light_count(scene));
+			size_t area_lights = scene.area_lights.count();
+			for (size_t i = 0; i < area_lights; i++) {
+				float p = light_distribution.probability(i);
+				if (p > 0.0f) pdf += p * scene.area_lights.pdf(i, from, dir);
+			}
+			if (scene.environment) {
+				float p = light_distribution.probability(area_lights);
+				if (p > 0.0f) pdf += p * std::visit([&](const auto& env) { return env.pdf(dir); }, *scene.environment);
+			}
+			return pdf;
 		},
 		from, dir);
 }

@@ -5,6 +5,7 @@
 // Depth: a camera ray has depth 0 and each bounce adds 1. A surface hit by a ray of depth d may
 // scatter only while d < max_depth, so max_depth = 0 shows emitters only, max_depth = 1 adds
 // direct lighting (one bounce), and so on.
+#include "light_distribution.h"
 #include "scene.h"
 
 #include <string>
@@ -28,6 +29,22 @@ struct Incoming_Sample {
 	float pdf = 0.0f;     // solid-angle density the direction was drawn with; unused if discrete
 	bool discrete = false;
 };
+
+// A point on a light and what it sends towards a surface point (Pathtracer::sample_light).
+struct Light_Sample {
+	Vec3 direction{0.0f};     // unit, world space, from the surface point towards the light
+	float distance = INF_F;   // to the point on the light (INF_F: the environment)
+	Spectrum radiance{0.0f};  // what the light emits towards the surface point (0 from a light's back)
+	float pdf = 0.0f;         // the density of this sample, per solid angle
+	// A shadow ray must end short of the light, or it hits the light itself: at
+	// SHADOW_RAY_END * distance.
+	static constexpr float SHADOW_RAY_END = 1.0f - 1e-4f;
+};
+
+// Optional extension of task 6 (student/task6_direct_lighting.cpp, handout §6.5): Veach's power
+// heuristic, the weight of a sample drawn by strategy f that strategy g could also have drawn:
+// pdf_f^2 / (pdf_f^2 + pdf_g^2), each pdf the density of the same direction.
+float power_heuristic(float pdf_f, float pdf_g);
 
 class Pathtracer {
 public:
@@ -57,12 +74,27 @@ public:
 	float area_lights_pdf(Vec3 from, Vec3 dir) const;
 	bool has_lights() const; // false without lights, or when settings.light_sampling is off
 
+	// Framework, for task 6's extension: a light chosen as sample_area_lights chooses it, and on it a
+	// point (or a direction of the environment), with its distance, what it emits towards `from`,
+	// and the density of choosing it: (probability of the light) * dist^2 / (|cos theta_light| area).
+	// Only meaningful when has_lights().
+	Light_Sample sample_light(RNG& rng, Vec3 from) const;
+
+	// Optional extension of task 6 (handout §6.5): next-event estimation at `hit` (out_dir: unit,
+	// world space, towards the previous vertex; hit.position already lifted off the surface): the
+	// light reflected towards out_dir from one light sample, f * L * |cos theta| / pdf, weighted by
+	// the power heuristic against BSDF sampling, and 0 if the shadow ray is blocked. The NEE
+	// integrator (--integrator nee, nee_integrator.h) adds it at every vertex of a continuous BSDF
+	// in a scene with lights, and weights the emission its BSDF samples find by the heuristic.
+	Spectrum estimate_direct(RNG& rng, const Trace& hit, const BSDF& bsdf, Vec3 out_dir) const;
+
 	// Framework: the Part I shading (View::eye_light) of a hit.
 	Spectrum eye_light(const Ray& ray, const Trace& hit) const;
 
 	const Scene& scene;
 	Render_Settings settings; // image size, samples, max_depth, seed
 	View view = View::path;
+	Light_Distribution light_distribution; // which light sample_area_lights aims at
 
 private:
 	Spectrum debug_view(const Ray& ray) const;

@@ -26,7 +26,7 @@ void render_tile(const Pathtracer& pt, const Render_Settings& settings, const Ti
 			size_t index = size_t(y) * film.w + x;
 			Pixel_Stats& pixel = film.pixels[index];
 			for (uint32_t s = 0; s < settings.samples; s++) {
-				RNG rng = RNG::for_sample(settings.seed, index, s);
+				RNG rng = RNG::for_sample(settings.seed, index, s, settings.sampler);
 				pixel.add(pt.trace_pixel(x, y, rng));
 			}
 		}

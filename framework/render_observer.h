@@ -20,10 +20,10 @@ struct Ray_Traced { // Pathtracer::trace (observe): the radiance (Spectrum)
 struct Closest_Hit { // the scene's closest hit in Pathtracer::trace, view path (observe): the Trace
 	const Ray& ray;
 };
-struct Light_Sampled { // Pathtracer::sample_area_lights (observe): a Light_Sample
+struct Light_Sampled { // Pathtracer::sample_area_lights (observe): a Chosen_Light
 	Vec3 from;
 };
-struct Light_Sample {
+struct Chosen_Light {
 	Vec3 direction;
 	uint32_t light;   // the light chosen: an area light's index, or the environment's
 	bool environment; // whether it is the environment
@@ -75,7 +75,7 @@ public:
 	virtual void begin(const Closest_Hit&) {}
 	virtual void end(const Closest_Hit&, const Trace&) {}
 	virtual void begin(const Light_Sampled&) {}
-	virtual void end(const Light_Sampled&, const Light_Sample&) {}
+	virtual void end(const Light_Sampled&, const Chosen_Light&) {}
 	virtual void begin(const Light_Pdf&) {}
 	virtual void end(const Light_Pdf&, float) {}
 	virtual void end(const BSDF_Sampled&, const Scatter&) {}

@@ -44,9 +44,10 @@ Area_Light mesh_light(const Tri_Mesh& mesh, const Mat4& to_world) {
 	Area_Light light;
 	for (const Triangle& tri : mesh.bvh.primitives) {
 		Light_Triangle t{transform_point(to_world, tri.v0.position), transform_point(to_world, tri.v1.position),
-		                 transform_point(to_world, tri.v2.position)};
+		                 transform_point(to_world, tri.v2.position), Vec3{0.0f}};
 		float area = triangle_area(t);
 		if (!(area > 0.0f)) continue; // zero-area triangles emit nothing
+		t.normal = glm::normalize(glm::cross(t.p1 - t.p0, t.p2 - t.p0));
 		light.triangles.push_back(t);
 		light.area += area;
 		light.cdf.push_back(light.area);
@@ -66,6 +67,7 @@ Area_Light sphere_light(const Sphere& sphere, const Mat4& to_world, uint32_t obj
 	Area_Light light;
 	light.center = transform_point(to_world, Vec3{0.0f});
 	light.radius = sphere.radius * scale;
+	light.inside_out = glm::determinant(Mat3(to_world)) < 0.0f; // as Instance turns its normals
 	light.area = 4.0f * PI_F * light.radius * light.radius;
 	return light;
 }
@@ -73,34 +75,41 @@ Area_Light sphere_light(const Sphere& sphere, const Mat4& to_world, uint32_t obj
 
 void Area_Lights::build(const std::vector<Instance>& objects, const std::vector<Material>& materials) {
 	lights.clear();
+	light_of_object.clear();
 	for (const Instance& object : objects) {
 		if (!materials.at(object.material).is_emissive()) continue;
 		Area_Light light = std::holds_alternative<Tri_Mesh>(object.shape)
 		                       ? mesh_light(std::get<Tri_Mesh>(object.shape), object.to_world)
 		                       : sphere_light(std::get<Sphere>(object.shape), object.to_world, object.index);
-		if (light.area > 0.0f && std::isfinite(light.area)) lights.push_back(std::move(light));
+		light.material = object.material;
+		if (!(light.area > 0.0f && std::isfinite(light.area))) continue;
+		if (light_of_object.size() <= object.index) light_of_object.resize(object.index + 1, -1);
+		light_of_object[object.index] = int(lights.size());
+		lights.push_back(std::move(light));
 	}
 }
 
-Vec3 Area_Lights::sample(size_t i, RNG& rng, Vec3 from) const {
+Area_Lights::Point Area_Lights::sample_point(size_t i, RNG& rng) const {
 	const Area_Light& light = lights[i];
-	Vec3 point;
 	if (light.triangles.empty()) {
 		// Uniform point on the sphere: z = 1 - 2u, phi = 2 pi v.
 		Vec2 u = rng.unit2();
 		float z = 1.0f - 2.0f * u.x, r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 2.0f * PI_F * u.y;
-		point = light.center + light.radius * Vec3{r * std::cos(phi), r * std::sin(phi), z};
-	} else {
-		// A triangle with probability proportional to its area, then a uniform point on it
-		// (square-root parametrization: b0 = 1 - sqrt(u1), b1 = u2 sqrt(u1)).
-		float target = rng.unit() * light.area;
-		size_t t = size_t(std::upper_bound(light.cdf.begin(), light.cdf.end(), target) - light.cdf.begin());
-		const Light_Triangle& tri = light.triangles[std::min(t, light.triangles.size() - 1)];
-		Vec2 u = rng.unit2();
-		float su = std::sqrt(u.x), b0 = 1.0f - su, b1 = u.y * su;
-		point = b0 * tri.p0 + b1 * tri.p1 + (1.0f - b0 - b1) * tri.p2;
+		Vec3 outwards{r * std::cos(phi), r * std::sin(phi), z};
+		return Point{light.center + light.radius * outwards, light.inside_out ? -outwards : outwards};
 	}
-	return glm::normalize(point - from);
+	// A triangle with probability proportional to its area, then a uniform point on it
+	// (square-root parametrization: b0 = 1 - sqrt(u1), b1 = u2 sqrt(u1)).
+	float target = rng.unit() * light.area;
+	size_t t = size_t(std::upper_bound(light.cdf.begin(), light.cdf.end(), target) - light.cdf.begin());
+	const Light_Triangle& tri = light.triangles[std::min(t, light.triangles.size() - 1)];
+	Vec2 u = rng.unit2();
+	float su = std::sqrt(u.x), b0 = 1.0f - su, b1 = u.y * su;
+	return Point{b0 * tri.p0 + b1 * tri.p1 + (1.0f - b0 - b1) * tri.p2, tri.normal};
+}
+
+Vec3 Area_Lights::sample(size_t i, RNG& rng, Vec3 from) const {
+	return glm::normalize(sample_point(i, rng).position - from);
 }
 
 float Area_Lights::pdf(size_t i, Vec3 from, Vec3 dir) const {
@@ -139,4 +148,12 @@ float Area_Lights::pdf(size_t i, Vec3 from, Vec3 dir) const {
 		pdf += area_to_solid_angle(from, from + float(s) * dir, n, light.area);
 	}
 	return pdf;
+}
+
+float Area_Lights::point_pdf(size_t i, Vec3 from, Vec3 point, Vec3 normal) const {
+	return area_to_solid_angle(from, point, normal, lights[i].area);
+}
+
+int Area_Lights::light_of(uint32_t object) const {
+	return object < light_of_object.size() ? light_of_object[object] : -1;
 }

@@ -225,6 +225,13 @@ TEST_CASE("sampled light directions have a finite positive density and cover the
 	}
 }
 
+// Settings that choose every light equally often (Light_Choice::uniform).
+Render_Settings uniform_choice() {
+	Render_Settings settings;
+	settings.light_choice = Light_Choice::uniform;
+	return settings;
+}
+
 TEST_CASE("with an environment and an emissive sphere, each is chosen half the time", "[area_lights]") {
 	Light_View view;
 	view.name = "constant environment + sphere light";
@@ -236,7 +243,7 @@ TEST_CASE("with an environment and an emissive sphere, each is chosen half the t
 	view.ring_edges = whole_sphere_edges(1.0, 3.0);
 	view.silhouette = std::sqrt(1.0 - 1.0 / 9.0);
 	view.sectors = 60;
-	Pathtracer pt(view.scene, Render_Settings{});
+	Pathtracer pt(view.scene, uniform_choice());
 	REQUIRE(pt.has_lights());
 
 	SECTION("the density is the average of the two densities") {
@@ -268,7 +275,7 @@ TEST_CASE("with two emissive objects, each is chosen half the time", "[area_ligh
 	view.ring_edges = whole_sphere_edges(1.0, 3.0);
 	view.silhouette = std::sqrt(1.0 - 1.0 / 9.0);
 	view.sectors = 80;
-	Pathtracer pt(view.scene, Render_Settings{});
+	Pathtracer pt(view.scene, uniform_choice());
 
 	SECTION("the density is the average of the two densities") {
 		RNG rng(6);

@@ -31,9 +31,12 @@ Scene sphere_scene() {
 	return scene;
 }
 
-Film render_with(const Scene& scene, View view, Render_Options options, uint64_t seed = 7) {
+Film render_with(const Scene& scene, View view, Render_Options options, uint64_t seed = 7,
+                 Sampler sampler = Sampler::independent, Integrator integrator = Integrator::mixture) {
 	Render_Settings settings = scene.settings;
 	settings.seed = seed;
+	settings.sampler = sampler;
+	settings.integrator = integrator;
 	return render(Pathtracer(scene, settings, view), options);
 }
 
@@ -75,8 +78,10 @@ void require_random_pixels(const Film& film) {
 TEST_CASE("render is bit-identical for any number of threads, tile size and tile order") {
 	Scene scene = sphere_scene();
 	View view = GENERATE(View::direction, View::path);
-	CAPTURE(view_name(view));
-	Film reference = render_with(scene, view, threads_and_tiles(1, 16));
+	Sampler sampler = GENERATE(Sampler::independent, Sampler::sobol);
+	Integrator integrator = GENERATE(Integrator::mixture, Integrator::nee);
+	CAPTURE(view_name(view), sampler_name(sampler), integrator == Integrator::nee);
+	Film reference = render_with(scene, view, threads_and_tiles(1, 16), 7, sampler, integrator);
 	require_random_pixels(reference);
 
 	// (threads, tile size, shuffled tiles); 0 threads = all hardware threads.
@@ -85,7 +90,7 @@ TEST_CASE("render is bit-identical for any number of threads, tile size and tile
 	                               threads_and_tiles(2, 3, true), threads_and_tiles(0, 7, true)}) {
 		INFO("threads " << options.threads << ", tile size " << options.tile_size
 		     << (options.shuffle_tiles ? ", shuffled tiles" : ""));
-		long pixel = first_difference(reference, render_with(scene, view, options));
+		long pixel = first_difference(reference, render_with(scene, view, options, 7, sampler, integrator));
 		INFO("first differing pixel: " << pixel << " (a pixel's samples must not depend on which thread or "
 		     "tile draws them: seed each with RNG::for_sample)");
 		CHECK(pixel == -1);

@@ -25,6 +25,8 @@ const char* kind_name(Kind kind) {
 	case Kind::image_sampler: return "image_sampler";
 	case Kind::env_map: return "env_map";
 	case Kind::env_constant: return "env_constant";
+	case Kind::power_heuristic: return "power_heuristic";
+	case Kind::estimate_direct: return "estimate_direct";
 	}
 	return "an unknown request";
 }
@@ -52,6 +54,8 @@ const char* kind_functions(Kind kind) {
 	case Kind::image_sampler: return "Samplers::Sphere::Image";
 	case Kind::env_map: return "Env_Map";
 	case Kind::env_constant: return "Env_Constant (with your Samplers::Sphere::Uniform)";
+	case Kind::power_heuristic: return "power_heuristic";
+	case Kind::estimate_direct: return "Pathtracer::estimate_direct";
 	}
 	return "an unknown function";
 }

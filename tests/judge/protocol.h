@@ -14,7 +14,8 @@
 // and ends the subject. status OK: the payload is the request's Answer; status THREW: the payload
 // is the text of the exception the task function threw. Numbers are little-endian, floats are IEEE
 // binary32 bit patterns, a vector is a u64 count and its elements, a string a u64 length and bytes.
-// The encoding of each type is in wire.h.
+// The encoding of each type is in wire.h. Each request's `fits` says whether an answer has the shape
+// its inputs call for (one result per query): one that does not is malformed.
 //
 // Requests are batched: one request per student function (or per render) with every input of a
 // test case, never one request per ray. Each request below names the task function it runs, its
@@ -59,6 +60,8 @@ enum class Kind : uint32_t {
 	image_sampler,
 	env_map,
 	env_constant,
+	power_heuristic,
+	estimate_direct,
 };
 const char* kind_name(Kind kind);
 // The student functions a request runs, in the handouts' words (for messages).
@@ -80,6 +83,7 @@ struct Generate_Rays {
 	std::vector<Query> queries;
 	template<class A> void fields(A& a) { a(queries); }
 	using Answer = std::vector<Ray>;
+	bool fits(const Answer& a) const { return a.size() == queries.size(); }
 };
 
 // Pathtracer(scene, settings, view).trace_pixel(x, y, rng) for each sample, each with its own
@@ -97,6 +101,7 @@ struct Trace_Pixels {
 	std::vector<Sample> samples;
 	template<class A> void fields(A& a) { a(scene, settings, view, samples); }
 	using Answer = std::vector<Spectrum>;
+	bool fits(const Answer& a) const { return a.size() == samples.size(); }
 };
 
 // render(Pathtracer(scene, settings, view)) on `threads` threads: the whole film, every pixel's
@@ -109,6 +114,7 @@ struct Render {
 	uint32_t threads = 1;
 	template<class A> void fields(A& a) { a(scene, settings, view, threads); }
 	using Answer = Film;
+	bool fits(const Answer& a) const { return a.w == settings.width && a.h == settings.height; }
 };
 
 // ---- Task 2 ----
@@ -124,6 +130,7 @@ struct Triangle_Hits {
 	std::vector<Query> queries;
 	template<class A> void fields(A& a) { a(queries); }
 	using Answer = std::vector<Trace>;
+	bool fits(const Answer& a) const { return a.size() == queries.size(); }
 };
 
 // Sphere::hit(ray) for each pair.
@@ -137,6 +144,7 @@ struct Sphere_Hits {
 	std::vector<Query> queries;
 	template<class A> void fields(A& a) { a(queries); }
 	using Answer = std::vector<Trace>;
+	bool fits(const Answer& a) const { return a.size() == queries.size(); }
 };
 
 // ---- Task 3 ----
@@ -158,6 +166,7 @@ struct BBox_Hits {
 	std::vector<Query> queries;
 	template<class A> void fields(A& a) { a(queries); }
 	using Answer = std::vector<Result>;
+	bool fits(const Answer& a) const { return a.size() == queries.size(); }
 };
 
 // A built BVH's nodes (bvh.h), as the student's BVH::build left them.
@@ -185,6 +194,9 @@ struct BVH_Triangles {
 		std::vector<Trace> hits;
 		template<class A> void fields(A& a) { a(tree, primitives, hits); }
 	};
+	bool fits(const Answer& a) const {
+		return a.primitives.size() == triangles.size() && a.hits.size() == rays.size();
+	}
 };
 
 // BVH<Instance>(the scene's objects, max_leaf_size), then bvh.hit(ray) for each ray. The objects'
@@ -203,6 +215,10 @@ struct BVH_Instances {
 		uint64_t instance_tests = 0;
 		template<class A> void fields(A& a) { a(tree, order, hits, instance_tests); }
 	};
+	bool fits(const Answer& a) const { // a committed scene holds its objects in scene.bvh
+		size_t objects = scene.objects.empty() ? scene.bvh.primitives.size() : scene.objects.size();
+		return a.order.size() == objects && a.hits.size() == rays.size();
+	}
 };
 
 // ---- Tasks 4 and 5 ----
@@ -215,6 +231,7 @@ struct BSDF_Scatter {
 	RNG_State rng;
 	template<class A> void fields(A& a) { a(bsdf, out_dirs, rng); }
 	using Answer = std::vector<Scatter>;
+	bool fits(const Answer& a) const { return a.size() == out_dirs.size(); }
 };
 
 struct Direction_Pair {
@@ -229,6 +246,7 @@ struct BSDF_Evaluate {
 	std::vector<Direction_Pair> pairs;
 	template<class A> void fields(A& a) { a(bsdf, pairs); }
 	using Answer = std::vector<Spectrum>;
+	bool fits(const Answer& a) const { return a.size() == pairs.size(); }
 };
 
 // bsdf.pdf(out_dir, in_dir) for each pair.
@@ -238,6 +256,7 @@ struct BSDF_Pdf {
 	std::vector<Direction_Pair> pairs;
 	template<class A> void fields(A& a) { a(bsdf, pairs); }
 	using Answer = std::vector<float>;
+	bool fits(const Answer& a) const { return a.size() == pairs.size(); }
 };
 
 // reflect(dir) for each direction.
@@ -246,6 +265,7 @@ struct Reflect {
 	std::vector<Vec3> dirs;
 	template<class A> void fields(A& a) { a(dirs); }
 	using Answer = std::vector<Vec3>;
+	bool fits(const Answer& a) const { return a.size() == dirs.size(); }
 };
 
 // refract(out_dir, index_of_refraction, was_internal) for each query.
@@ -264,6 +284,7 @@ struct Refract {
 	std::vector<Query> queries;
 	template<class A> void fields(A& a) { a(queries); }
 	using Answer = std::vector<Result>;
+	bool fits(const Answer& a) const { return a.size() == queries.size(); }
 };
 
 // fresnel(cos_theta, index_of_refraction) for each query.
@@ -276,6 +297,7 @@ struct Fresnel {
 	std::vector<Query> queries;
 	template<class A> void fields(A& a) { a(queries); }
 	using Answer = std::vector<float>;
+	bool fits(const Answer& a) const { return a.size() == queries.size(); }
 };
 
 // ---- Task 6 ----
@@ -296,6 +318,31 @@ struct Sample_Incoming {
 	RNG_State rng;
 	template<class A> void fields(A& a) { a(scene, settings, queries, rng); }
 	using Answer = std::vector<Incoming_Sample>;
+	bool fits(const Answer& a) const { return a.size() == queries.size(); }
+};
+
+// ---- Task 6's optional extension: next-event estimation (handout §6.5) ----
+
+// power_heuristic(pdf_f, pdf_g) for each pair (x: pdf_f, y: pdf_g).
+struct Power_Heuristic {
+	static constexpr Kind KIND = Kind::power_heuristic;
+	std::vector<Vec2> pairs;
+	template<class A> void fields(A& a) { a(pairs); }
+	using Answer = std::vector<float>;
+	bool fits(const Answer& a) const { return a.size() == pairs.size(); }
+};
+
+// Pathtracer(scene, settings).estimate_direct(rng, hit, bsdf, out_dir) for each query, from one
+// generator. (Renders by the NEE integrator are Trace_Pixels and Render with settings.integrator.)
+struct Estimate_Direct {
+	static constexpr Kind KIND = Kind::estimate_direct;
+	Scene scene;
+	Render_Settings settings;
+	std::vector<Sample_Incoming::Query> queries;
+	RNG_State rng;
+	template<class A> void fields(A& a) { a(scene, settings, queries, rng); }
+	using Answer = std::vector<Spectrum>;
+	bool fits(const Answer& a) const { return a.size() == queries.size(); }
 };
 
 // ---- Task 7 ----
@@ -306,6 +353,7 @@ struct Direction_To_UV {
 	std::vector<Vec3> dirs;
 	template<class A> void fields(A& a) { a(dirs); }
 	using Answer = std::vector<Vec2>;
+	bool fits(const Answer& a) const { return a.size() == dirs.size(); }
 };
 
 // uv_to_direction(uv) for each point.
@@ -314,6 +362,7 @@ struct UV_To_Direction {
 	std::vector<Vec2> uvs;
 	template<class A> void fields(A& a) { a(uvs); }
 	using Answer = std::vector<Vec3>;
+	bool fits(const Answer& a) const { return a.size() == uvs.size(); }
 };
 
 // What a sampler answers: sample(u) for each u, pdf(dir) for each dir.
@@ -330,6 +379,7 @@ struct Uniform_Sphere {
 	std::vector<Vec3> dirs;
 	template<class A> void fields(A& a) { a(us, dirs); }
 	using Answer = Sampler_Answer;
+	bool fits(const Answer& a) const { return a.samples.size() == us.size() && a.pdfs.size() == dirs.size(); }
 };
 
 // Samplers::Sphere::Image(image): its tables, then sample(u) for each u and pdf(dir) for each dir.
@@ -345,6 +395,9 @@ struct Image_Sampler {
 		Sampler_Answer queries;
 		template<class A> void fields(A& a) { a(w, h, pdf_texel, cdf, queries); }
 	};
+	bool fits(const Answer& a) const {
+		return a.queries.samples.size() == us.size() && a.queries.pdfs.size() == dirs.size();
+	}
 };
 
 // Env_Map(image, importance_sampling): sample(u) for each u, pdf(dir) and evaluate(dir) for each
@@ -361,6 +414,10 @@ struct Env_Map_Queries {
 		std::vector<Spectrum> radiance;
 		template<class A> void fields(A& a) { a(queries, radiance); }
 	};
+	bool fits(const Answer& a) const {
+		return a.queries.samples.size() == us.size() && a.queries.pdfs.size() == dirs.size() &&
+		       a.radiance.size() == dirs.size();
+	}
 };
 
 // Env_Constant{radiance} (framework, sampling with Samplers::Sphere::Uniform): sample(u) for each u,
@@ -372,6 +429,10 @@ struct Env_Constant_Queries {
 	std::vector<Vec3> dirs;
 	template<class A> void fields(A& a) { a(radiance, us, dirs); }
 	using Answer = Env_Map_Queries::Answer;
+	bool fits(const Answer& a) const {
+		return a.queries.samples.size() == us.size() && a.queries.pdfs.size() == dirs.size() &&
+		       a.radiance.size() == dirs.size();
+	}
 };
 
 } // namespace protocol

@@ -35,11 +35,15 @@ public:
 
 	template<class Request> typename Request::Answer ask(const Request& request) {
 		std::string answer = exchange(Request::KIND, wire::encode(request));
-		try {
-			return wire::decode<typename Request::Answer>(answer);
-		} catch (const wire::Malformed& problem) {
-			fail(Request::KIND, std::string("answered with bytes that are not an answer (") + problem.what() + ")");
-		}
+		auto decoded = [&] {
+			try {
+				return wire::decode<typename Request::Answer>(answer);
+			} catch (const wire::Malformed& problem) {
+				fail(Request::KIND, std::string("answered with bytes that are not an answer (") + problem.what() + ")");
+			}
+		}();
+		if (!request.fits(decoded)) fail(Request::KIND, "answered with a result count its inputs do not call for");
+		return decoded;
 	}
 
 	// The end of what the subject printed (stdout and stderr), at most `lines` lines.

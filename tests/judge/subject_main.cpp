@@ -157,6 +157,20 @@ Sample_Incoming::Answer answer(const Sample_Incoming& request) {
 	return samples;
 }
 
+Power_Heuristic::Answer answer(const Power_Heuristic& request) {
+	Power_Heuristic::Answer weights;
+	for (Vec2 pdfs : request.pairs) weights.push_back(power_heuristic(pdfs.x, pdfs.y));
+	return weights;
+}
+
+Estimate_Direct::Answer answer(const Estimate_Direct& request) {
+	Pathtracer pathtracer(request.scene, request.settings);
+	RNG rng = RNG::restore(request.rng);
+	Estimate_Direct::Answer light;
+	for (const auto& q : request.queries) light.push_back(pathtracer.estimate_direct(rng, q.hit, q.bsdf, q.out_dir));
+	return light;
+}
+
 Direction_To_UV::Answer answer(const Direction_To_UV& request) {
 	Direction_To_UV::Answer uvs;
 	for (Vec3 dir : request.dirs) uvs.push_back(direction_to_uv(dir));
@@ -237,6 +251,8 @@ std::string serve(Kind kind, const std::string& payload) {
 	case Kind::image_sampler: return serve<Image_Sampler>(payload);
 	case Kind::env_map: return serve<Env_Map_Queries>(payload);
 	case Kind::env_constant: return serve<Env_Constant_Queries>(payload);
+	case Kind::power_heuristic: return serve<Power_Heuristic>(payload);
+	case Kind::estimate_direct: return serve<Estimate_Direct>(payload);
 	}
 	throw wire::Malformed("unknown request kind " + std::to_string(uint32_t(kind)));
 }

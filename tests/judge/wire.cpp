@@ -36,13 +36,14 @@ void Writer::put(View view) {
 	put(uint32_t(view));
 }
 void Writer::put(const RNG::State& rng) {
-	put(rng.state), put(rng.increment);
+	(*this)(rng.state, rng.increment, rng.low_discrepancy, rng.reversed_index, rng.dimension, rng.pixel_key);
 }
 void Writer::put(const Camera& camera) {
 	put(camera.camera_to_world), put(camera.v_fov), put(camera.aspect_ratio);
 }
 void Writer::put(const Render_Settings& s) {
 	(*this)(s.width, s.height, s.samples, s.max_depth, s.seed, s.light_sampling, s.russian_roulette);
+	(*this)(uint32_t(s.sampler), uint32_t(s.integrator), uint32_t(s.light_choice));
 }
 void Writer::put(const Ray& ray) {
 	(*this)(ray.point, ray.dir, ray.dist_bounds, ray.depth);
@@ -144,13 +145,20 @@ void Reader::get(View& view) {
 	view = View(n);
 }
 void Reader::get(RNG::State& rng) {
-	get(rng.state), get(rng.increment);
+	(*this)(rng.state, rng.increment, rng.low_discrepancy, rng.reversed_index, rng.dimension, rng.pixel_key);
 }
 void Reader::get(Camera& camera) {
 	get(camera.camera_to_world), get(camera.v_fov), get(camera.aspect_ratio);
 }
 void Reader::get(Render_Settings& s) {
 	(*this)(s.width, s.height, s.samples, s.max_depth, s.seed, s.light_sampling, s.russian_roulette);
+	uint32_t sampler = 0, integrator = 0, light_choice = 0;
+	(*this)(sampler, integrator, light_choice);
+	if (sampler > uint32_t(Sampler::sobol)) throw Malformed("an unknown sampler " + std::to_string(sampler));
+	if (integrator > uint32_t(Integrator::nee)) throw Malformed("an unknown integrator " + std::to_string(integrator));
+	if (light_choice > uint32_t(Light_Choice::power))
+		throw Malformed("an unknown light choice " + std::to_string(light_choice));
+	s.sampler = Sampler(sampler), s.integrator = Integrator(integrator), s.light_choice = Light_Choice(light_choice);
 }
 void Reader::get(Ray& ray) {
 	(*this)(ray.point, ray.dir, ray.dist_bounds, ray.depth);

@@ -116,6 +116,11 @@ TEST_CASE("_exit(0) on the first call of a task function earns nothing", "[secur
 	require_nothing_earned(grade("task1_exit_on_first_call.cpp", 1), "ended before it answered");
 }
 
+TEST_CASE("an answer forged on the answer channel, with fewer results than asked for, earns nothing",
+          "[security]") {
+	require_nothing_earned(grade("task1_forged_short_answer.cpp", 1), "a result count its inputs do not call for");
+}
+
 TEST_CASE("a throw from a static initializer earns nothing", "[security]") {
 	require_nothing_earned(grade("task1_throw_in_static_initializer.cpp", 1), "SIGABRT");
 }

@@ -14,7 +14,7 @@ struct Call_Counter : Render_Observer {
 	void end(const Closest_Hit&, const Trace&) override {
 		closest_hits++;
 	}
-	void end(const Light_Sampled&, const Light_Sample&) override {
+	void end(const Light_Sampled&, const Chosen_Light&) override {
 		light_samples++;
 	}
 	void end(const Light_Pdf&, float) override {

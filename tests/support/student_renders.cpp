@@ -37,10 +37,11 @@ std::string chosen_hint(const std::string& hint, const std::vector<Image_Hint>& 
 } // namespace
 
 void check_renders_like_reference(const std::string& name, const std::string& hint,
-                                  const std::vector<Image_Hint>& if_failed) {
+                                  const std::vector<Image_Hint>& if_failed, Integrator integrator) {
 	const Graded_Scene& graded = graded_scene(name);
 	Scene scene = load_graded(graded);
 	Render_Settings settings = scene.settings;
+	settings.integrator = integrator;
 	if (judge::secret_seed()) {
 		RNG rng = judge::case_generator("render " + name);
 		settings.seed = uint64_t(rng.integer()) << 32 | rng.integer();
@@ -50,7 +51,8 @@ void check_renders_like_reference(const std::string& name, const std::string& hi
 	if (report::enabled()) report_images(name, check);
 	INFO("scenes/graded/" << name << ".json: " << check.comparison.message);
 	INFO(chosen_hint(hint, if_failed) << " Render it: ./lab render-student scenes/graded/" << name << ".json"
-	                                  << (graded.view == View::eye_light ? " --view eye" : ""));
+	                                  << (graded.view == View::eye_light ? " --view eye" : "")
+	                                  << (integrator == Integrator::nee ? " --integrator nee" : ""));
 	CHECK(check.non_finite == 0);
 	CHECK(check.comparison.pass);
 }

@@ -1,6 +1,8 @@
 #pragma once
 // Reference-image tests of a grader: the student's code renders a graded scene (in the subject,
 // tests/judge/), and the judge compares the film with the stored reference (graded_images.h).
+#include "scene.h"
+
 #include <string>
 #include <vector>
 
@@ -17,5 +19,7 @@ struct Image_Hint {
 // the handout's terms). `render_it` ends the message (how to see the picture). For the grade report (report_record.h) it also
 // writes the render, the reference and a heat map of the z-scores (z_heat_map.h) as PNGs and
 // attaches them to the test case. With a grading seed the render uses a seed drawn from it.
+// `integrator`: the estimator the render uses (task 6's extension renders with Integrator::nee).
 void check_renders_like_reference(const std::string& name, const std::string& hint,
-                                  const std::vector<Image_Hint>& if_failed = {});
+                                  const std::vector<Image_Hint>& if_failed = {},
+                                  Integrator integrator = Integrator::mixture);

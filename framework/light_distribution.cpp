@@ -1,0 +1,73 @@
+#include "light_distribution.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace {
+// The integral of luminance(L(dir)) over the sphere. An image environment: the sum over texels of
+// luminance * solid angle, a texel of row j covering (2 pi / w) (pi / h) sin(theta_j) steradians.
+double environment_integral(const Environment& environment) {
+	if (const auto* constant = std::get_if<Env_Constant>(&environment))
+		return 4.0 * M_PI * double(luminance(constant->radiance));
+	const HDR_Image& image = std::get<Env_Map>(environment).image;
+	double total = 0.0;
+	for (uint32_t j = 0; j < image.h; j++) {
+		double row = 0.0;
+		for (uint32_t i = 0; i < image.w; i++) row += double(luminance(image.at(i, j)));
+		total += row * std::sin(M_PI * (j + 0.5) / image.h);
+	}
+	return total * (2.0 * M_PI / image.w) * (M_PI / image.h);
+}
+} // namespace
+
+std::vector<double> light_powers(const Scene& scene) {
+	std::vector<double> powers;
+	const Area_Lights& lights = scene.area_lights;
+	for (size_t i = 0; i < lights.count(); i++) {
+		// Every point of a light's front side radiates its emission into the hemisphere, so its
+		// exitance is pi * emission (Lambert's law).
+		Spectrum emission = scene.materials.at(lights.material(i)).emission;
+		powers.push_back(M_PI * double(lights.area(i)) * double(luminance(emission)));
+	}
+	if (scene.environment) {
+		BBox box = scene.bvh.bbox();
+		double radius = box.empty() ? 0.0 : 0.5 * glm::length(glm::dvec3(box.max) - glm::dvec3(box.min));
+		powers.push_back(M_PI * radius * radius * environment_integral(*scene.environment));
+	}
+	return powers;
+}
+
+size_t light_count(const Scene& scene) {
+	return scene.area_lights.count() + (scene.environment ? 1 : 0);
+}
+
+Light_Distribution::Light_Distribution(const Scene& scene_, Light_Choice choice) : scene(scene_) {
+	if (choice != Light_Choice::power) return;
+	std::vector<double> powers = light_powers(scene);
+	double total = std::accumulate(powers.begin(), powers.end(), 0.0);
+	by_power = total > 0.0 && std::isfinite(total) &&
+	           std::all_of(powers.begin(), powers.end(), [](double p) { return p >= 0.0; });
+	if (!by_power) return;
+	double sum = 0.0, uniform = 1.0 / double(powers.size());
+	for (double power : powers) {
+		double p = (1.0 - UNIFORM_SHARE) * power / total + UNIFORM_SHARE * uniform;
+		probabilities.push_back(float(p));
+		sum += p;
+		cdf.push_back(float(sum));
+	}
+	cdf.back() = 1.0f;
+}
+
+bool Light_Distribution::uniform() const {
+	return !by_power || probabilities.size() != light_count(scene);
+}
+
+size_t Light_Distribution::choose(RNG& rng) const {
+	if (uniform()) return rng.integer(uint32_t(light_count(scene)));
+	size_t i = size_t(std::upper_bound(cdf.begin(), cdf.end(), rng.unit()) - cdf.begin());
+	return std::min(i, cdf.size() - 1);
+}
+
+float Light_Distribution::probability(size_t i) const {
+	return uniform() ? 1.0f / float(light_count(scene)) : probabilities[i];
+}

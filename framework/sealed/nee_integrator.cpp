@@ -1,0 +1,105 @@
+#include "nee_integrator.h"
+#include "frame.h"
+#include "render_observer.h"
+
+#include <algorithm>
+
+namespace {
+
+// How a ray left its vertex: what the emission it finds is weighted by.
+struct Arrival {
+	bool light_sampled = false; // the vertex also took a light sample (else: full weight)
+	float bsdf_pdf = 0.0f;      // the density of the BSDF sample that chose the ray's direction
+};
+
+// The weight of the emission that `ray` found at `hit`, by the power heuristic against light
+// sampling (1 if its vertex took no light sample).
+float emission_weight(const Pathtracer& pt, const Arrival& arrival, const Ray& ray, const Trace& hit) {
+	if (!arrival.light_sampled) return 1.0f;
+	return power_heuristic(arrival.bsdf_pdf, light_pdf(pt, ray, hit));
+}
+
+// Rays leave a surface from the hit point lifted off it, by an offset that grows with the
+// coordinates' rounding error: task 4's scheme (Mitsuba 3's RayEpsilon, reference/task4_path.cpp).
+Vec3 lifted(const Trace& hit, Vec3 dir) {
+	constexpr float RAY_EPSILON = 64.0f * 0x1p-24f;
+	Vec3 p = hit.position;
+	float offset = (1.0f + std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)})) * RAY_EPSILON;
+	return p + offset * (glm::dot(dir, hit.normal) >= 0.0f ? hit.normal : -hit.normal);
+}
+
+float max_component(Spectrum s) {
+	return std::max({s.r, s.g, s.b});
+}
+
+Spectrum radiance_along(const Pathtracer& pt, RNG& rng, const Ray& ray, const Arrival& arrival);
+
+// The radiance leaving `hit` towards the ray's origin: emission (weighted), the light sample, and
+// the BSDF sample continuing the path.
+Spectrum shade_nee(const Pathtracer& pt, RNG& rng, const Ray& ray, const Trace& hit, const Arrival& arrival) {
+	const Material& material = pt.scene.materials[hit.material];
+	Frame frame = Frame::from_normal(hit.normal);
+	Vec3 out_dir = -glm::normalize(ray.dir);
+	Spectrum radiance = material.emitted(frame.to_local(out_dir));
+	if (radiance != Spectrum{0.0f}) radiance *= emission_weight(pt, arrival, ray, hit);
+	if (ray.depth >= pt.settings.max_depth || material.bsdf.is_black()) return radiance;
+
+	// Light samples, and their densities, are taken from where the next ray starts (task 4).
+	const BSDF& bsdf = material.bsdf;
+	Trace from = hit;
+	from.position = lifted(hit, out_dir);
+	bool light_sampled = !bsdf.is_discrete() && pt.has_lights();
+	if (light_sampled) radiance += pt.estimate_direct(rng, from, bsdf, out_dir);
+
+	Vec3 out_local = frame.to_local(out_dir);
+	Scatter s = bsdf.scatter(rng, out_local);
+	float pdf = bsdf.is_discrete() ? 0.0f : bsdf.pdf(out_local, s.direction);
+	Spectrum weight = bsdf.is_discrete() ? s.attenuation
+	                  : pdf > 0.0f       ? s.attenuation * std::abs(s.direction.y) / pdf
+	                                     : Spectrum{0.0f};
+	if (weight == Spectrum{0.0f}) return radiance;
+	// Russian roulette as task 4 plays it (reference/task4_path.cpp: q = min(1, max(largest albedo
+	// component, largest weight component)), from its depth on.
+	constexpr uint32_t ROULETTE_DEPTH = 3;
+	if (pt.settings.russian_roulette && ray.depth >= ROULETTE_DEPTH) {
+		float q = std::min(1.0f, std::max(max_component(bsdf.albedo()), max_component(weight)));
+		if (q < 1.0f) {
+			if (!rng.coin_flip(q)) return radiance;
+			weight /= q;
+		}
+	}
+	Vec3 dir = frame.to_world(s.direction);
+	Ray next(lifted(hit, dir), dir, Vec2{0.0f, INF_F}, ray.depth + 1);
+	return radiance + weight * radiance_along(pt, rng, next, Arrival{light_sampled, pdf});
+}
+
+// The radiance arriving along `ray`, told to the render observer as Pathtracer::trace tells it.
+Spectrum radiance_along(const Pathtracer& pt, RNG& rng, const Ray& ray, const Arrival& arrival) {
+	rng.begin_vertex(ray.depth);
+	return observe<Ray_Traced>(
+		[&] {
+			Trace hit = observe<Closest_Hit>([&] { return pt.scene.hit(ray); }, ray);
+			return hit.hit ? shade_nee(pt, rng, ray, hit, arrival)
+			               : pt.scene.environment_radiance(ray.dir) * emission_weight(pt, arrival, ray, hit);
+		},
+		ray);
+}
+
+} // namespace
+
+float light_pdf(const Pathtracer& pt, const Ray& ray, const Trace& hit) {
+	const Scene& scene = pt.scene;
+	if (!hit.hit) {
+		if (!scene.environment) return 0.0f;
+		float chosen = pt.light_distribution.probability(scene.area_lights.count());
+		return chosen * std::visit([&](const auto& env) { return env.pdf(ray.dir); }, *scene.environment);
+	}
+	int light = scene.area_lights.light_of(hit.object);
+	if (light < 0) return 0.0f;
+	return pt.light_distribution.probability(size_t(light)) *
+	       scene.area_lights.point_pdf(size_t(light), ray.point, hit.position, hit.normal);
+}
+
+Spectrum trace_nee(const Pathtracer& pathtracer, RNG& rng, const Ray& ray) {
+	return radiance_along(pathtracer, rng, ray, Arrival{});
+}

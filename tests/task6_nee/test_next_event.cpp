@@ -1,0 +1,239 @@
+// Grader of task 6's optional extension, part 2: Pathtracer::estimate_direct and the NEE integrator
+// built on it (handout §6.5). A shadow ray that is blocked gives exactly 0; the light-sampled share
+// is what MIS with the power heuristic gives it; together with the BSDF-sampled share (weighted by
+// the student's power_heuristic) it estimates Lambert's closed form; renders match closed forms and
+// the stored reference image; and next-event estimation is less noisy than BSDF sampling. The
+// student's functions answer in one request per estimate (student_calls.h); the rest is the grader's.
+#include "direct_lighting_estimators.h"
+#include "frame.h"
+#include "light_closed_forms.h"
+#include "light_scenes.h"
+#include "nee_integrator.h"
+#include "nee_significance.h"
+#include "student_calls.h"
+#include "student_renders.h"
+
+#include <catch2/catch.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+
+namespace {
+
+const float RHO = 0.5f; // albedo of every receiver
+const BSDF GREY{BSDF_Lambertian{Spectrum{RHO}}};
+
+// A tilted, off-centre receiver under a square light of half-side 0.5 at height 1 (as task 6's
+// grader): local and world directions differ in every component.
+const Vec3 POINT{0.2f, 0.0f, -0.1f};
+const Vec3 NORMAL = glm::normalize(Vec3{0.25f, 1.0f, -0.15f});
+const Vec3 OUT_DIR = glm::normalize(Vec3{-0.3f, 1.0f, 0.4f});
+
+Render_Settings nee_settings(uint64_t seed = 0) {
+	Render_Settings settings;
+	settings.integrator = Integrator::nee;
+	settings.seed = seed;
+	return settings;
+}
+
+double channel_average(Spectrum s) {
+	return (double(s.r) + double(s.g) + double(s.b)) / 3.0;
+}
+
+// The grader's own light-sampled share of next-event estimation: one light sample, the shadow ray,
+// and the power heuristic, computed here in double precision.
+double light_share(const Pathtracer& pt, RNG& rng, const Trace& point, Vec3 out_dir) {
+	Light_Sample light = pt.sample_light(rng, point.position);
+	if (!(light.pdf > 0.0f)) return 0.0;
+	Frame frame = Frame::from_normal(point.normal);
+	Vec3 out_local = frame.to_local(out_dir), in_local = frame.to_local(light.direction);
+	Spectrum f = GREY.evaluate(out_local, in_local);
+	Ray shadow(point.position, light.direction, Vec2{0.0f, Light_Sample::SHADOW_RAY_END * light.distance});
+	if (f == Spectrum{0.0f} || pt.scene.occluded(shadow)) return 0.0;
+	double p_light = light.pdf, p_bsdf = GREY.pdf(out_local, in_local);
+	double weight = p_light * p_light / (p_light * p_light + p_bsdf * p_bsdf);
+	return channel_average(f * light.radiance) * std::abs(double(in_local.y)) * weight / p_light;
+}
+
+// n samples of the BSDF-sampled share: emission found along a BSDF sample, weighted by the
+// student's power_heuristic (one request for all n) against the light density of what the ray found.
+std::vector<double> bsdf_share(const Pathtracer& pt, const Trace& point, Vec3 out_dir, size_t n, uint64_t seed) {
+	std::vector<double> values(n);
+	std::vector<Vec2> densities(n); // (BSDF pdf, light pdf) of each sample
+	RNG rng(seed);
+	Frame frame = Frame::from_normal(point.normal);
+	Vec3 out_local = frame.to_local(out_dir);
+	for (size_t i = 0; i < n; i++) {
+		Scatter s = GREY.scatter(rng, out_local);
+		float pdf = GREY.pdf(out_local, s.direction);
+		Ray ray(point.position, frame.to_world(s.direction));
+		Trace hit = pt.scene.hit(ray);
+		Spectrum arriving = hit.hit ? pt.scene.materials[hit.material].emitted(Vec3{0.0f, -glm::dot(ray.dir, hit.normal), 0.0f})
+		                            : pt.scene.environment_radiance(ray.dir);
+		values[i] = pdf > 0.0f ? channel_average(s.attenuation * arriving) * std::abs(s.direction.y) / pdf : 0.0;
+		densities[i] = Vec2{pdf, light_pdf(pt, ray, hit)};
+	}
+	std::vector<float> weights = student_power_heuristic(densities);
+	for (size_t i = 0; i < n; i++) values[i] *= weights[i];
+	return values;
+}
+
+std::vector<double> sum(const std::vector<double>& a, const std::vector<double>& b) {
+	std::vector<double> s(a.size());
+	for (size_t i = 0; i < a.size(); i++) s[i] = a[i] + b[i];
+	return s;
+}
+
+void check_closed_form(const Sample_Moments& m, double expected, const std::string& what) {
+	double z = (m.mean - expected) / m.standard_error();
+	INFO(what << ": estimated " << m.mean << " +- " << m.standard_error() << " (" << m.n << " samples), closed form "
+	          << expected << ", z = " << z << " (critical " << task6_nee::z_critical() << ")");
+	CHECK(std::abs(z) <= task6_nee::z_critical());
+}
+
+// A large grey floor under a square light, seen through a 1 x 1 pixel camera that sees only the
+// floor's centre (task 6's grader's scene).
+Scene lit_floor(float half_side, float height, Spectrum radiance, Vec3 eye) {
+	Scene scene;
+	add_object(scene, parallelogram(Vec3{-3.0f, 0.0f, -3.0f}, Vec3{0.0f, 0.0f, 6.0f}, Vec3{6.0f, 0.0f, 0.0f}),
+	           add_material(scene, diffuse_material(Spectrum{RHO}), "floor"));
+	add_object(scene, ceiling_square(half_side, height), add_material(scene, emitter(radiance), "light"));
+	scene.camera = Camera::look_at(eye, Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f}, 0.05f, 1.0f);
+	return scene;
+}
+
+Render_Settings one_pixel(uint64_t seed) {
+	Render_Settings settings = nee_settings(seed);
+	settings.width = settings.height = 1;
+	settings.max_depth = 1; // direct light only
+	return settings;
+}
+
+} // namespace
+
+TEST_CASE("estimate_direct gives exactly 0 when the shadow ray is blocked", "[task6_nee][fn:estimate_direct]") {
+	// A black square between the point and the light covers the light as seen from the point.
+	Scene scene = ceiling_light_scene(0.5f, 1.0f);
+	scene.objects = std::move(scene.bvh.primitives); // reopen the committed scene
+	add_object(scene, ceiling_square(0.8f, 0.5f), add_material(scene, diffuse_material(Spectrum{0.0f}), "blocker"));
+	scene.commit();
+	Pathtracer pt(scene, nee_settings());
+	std::vector<double> values = student_direct_light(pt.scene, pt.settings, surface_point(Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f}), GREY,
+	                                                  Vec3{0.0f, 1.0f, 0.0f}, 20000, 1);
+	size_t nonzero = size_t(std::count_if(values.begin(), values.end(), [](double v) { return v != 0.0; }));
+	INFO(nonzero << " of 20000 light samples behind a blocker returned light: cast the shadow ray with "
+	                "scene.occluded from hit.position towards the light, up to SHADOW_RAY_END * distance (handout "
+	                "§6.5)");
+	CHECK(nonzero == 0);
+}
+
+TEST_CASE("estimate_direct gives exactly 0 for a light behind the surface", "[task6_nee][fn:estimate_direct]") {
+	Scene scene = ceiling_light_scene(0.5f, 1.0f);
+	Pathtracer pt(scene, nee_settings());
+	Vec3 down{0.0f, -1.0f, 0.0f}; // a surface facing away from the light, seen from below
+	std::vector<double> values = student_direct_light(pt.scene, pt.settings, surface_point(Vec3{0.0f}, down), GREY, down, 20000, 2);
+	size_t bad = size_t(std::count_if(values.begin(), values.end(), [](double v) { return v != 0.0; }));
+	INFO(bad << " of 20000 samples of a light behind the surface were not 0: the BSDF is 0 there (handout §6.5)");
+	CHECK(bad == 0);
+}
+
+TEST_CASE("estimate_direct's mean is the light-sampled share the power heuristic gives it",
+          "[task6_nee][fn:estimate_direct]") {
+	// Two-sample z-test against the grader's own light samples, weighted by p_l^2 / (p_l^2 + p_b^2).
+	Scene scene = ceiling_light_scene(0.5f, 1.0f);
+	Pathtracer pt(scene, nee_settings());
+	Trace point = surface_point(POINT, NORMAL);
+	Sample_Moments student = moments(student_direct_light(pt.scene, pt.settings, point, GREY, OUT_DIR, 100000, 11));
+	std::vector<double> own(100000);
+	RNG rng(12);
+	for (double& v : own) v = light_share(pt, rng, point, OUT_DIR);
+	Sample_Moments grader = moments(own);
+	double z = (student.mean - grader.mean) / std::hypot(student.standard_error(), grader.standard_error());
+	INFO("estimate_direct averaged " << student.mean << " +- " << student.standard_error()
+	                                 << "; light samples weighted by the power heuristic average " << grader.mean
+	                                 << " +- " << grader.standard_error() << ", z = " << z << " (critical "
+	                                 << task6_nee::z_critical()
+	                                 << "). Return f * L * |cos| * w / pdf with w = power_heuristic(light pdf, BSDF "
+	                                    "pdf) (handout §6.5)");
+	CHECK(std::abs(z) <= task6_nee::z_critical());
+}
+
+TEST_CASE("light-sampled and BSDF-sampled shares add up to Lambert's formula",
+          "[task6_nee][uses:estimate_direct][uses:power_heuristic]") {
+	SECTION("a square light over a tilted receiver") {
+		Scene scene = ceiling_light_scene(0.5f, 1.0f);
+		Pathtracer pt(scene, nee_settings());
+		Trace point = surface_point(POINT, NORMAL);
+		double e = closed_form::polygon_irradiance(ceiling_square_corners(0.5f, 1.0f), glm::dvec3(POINT),
+		                                           glm::dvec3(NORMAL), 1.0);
+		std::vector<double> both = sum(student_direct_light(pt.scene, pt.settings, point, GREY, OUT_DIR, 100000, 21),
+		                               bsdf_share(pt, point, OUT_DIR, 100000, 22));
+		check_closed_form(moments(both), RHO * e / M_PI,
+		                  "estimate_direct + BSDF samples weighted by power_heuristic, square light: each share must "
+		                  "be weighted by the heuristic of its own density against the other's (handout §6.5)");
+	}
+	SECTION("a sphere light 30 degrees off the normal") {
+		Scene scene;
+		add_object(scene, Sphere{0.5f}, add_material(scene, emitter(Spectrum{1.0f}), "light"),
+		           glm::translate(Mat4{1.0f}, Vec3{0.0f, 2.0f, 0.0f}));
+		scene.commit();
+		Pathtracer pt(scene, nee_settings());
+		Vec3 normal{std::sin(PI_F / 6.0f), std::cos(PI_F / 6.0f), 0.0f};
+		Trace point = surface_point(Vec3{0.0f}, normal);
+		double expected = RHO * closed_form::sphere_irradiance(0.5, 2.0, std::cos(M_PI / 6.0), 1.0) / M_PI;
+		std::vector<double> both = sum(student_direct_light(pt.scene, pt.settings, point, GREY, normal, 100000, 23),
+		                               bsdf_share(pt, point, normal, 100000, 24));
+		check_closed_form(moments(both), expected,
+		                  "estimate_direct + BSDF samples weighted by power_heuristic, sphere light (half of its "
+		                  "points face away: their shadow rays are blocked by the sphere itself; handout §6.5)");
+	}
+}
+
+TEST_CASE("the NEE integrator renders a floor under a square light as rho E / pi (max_depth 1)",
+          "[task6_nee][uses:estimate_direct][uses:power_heuristic]") {
+	struct Case {
+		float half_side, height, radiance;
+		uint64_t seed;
+	};
+	for (Case c : {Case{0.5f, 1.0f, 2.0f, 41}, Case{1.0f, 1.0f, 1.0f, 42}}) {
+		Scene scene = lit_floor(c.half_side, c.height, Spectrum{c.radiance}, Vec3{0.6f, 0.4f, 0.5f});
+		scene.commit();
+		Pathtracer pt(scene, one_pixel(c.seed));
+		double e = closed_form::centred_square_irradiance(c.half_side, c.height, c.radiance);
+		check_closed_form(moments(student_pixel_samples(pt.scene, pt.settings, 50000)), RHO * e / M_PI,
+		                  "pixel under a square light with a/h = " + std::to_string(c.half_side / c.height) +
+		                      " by --integrator nee with your estimate_direct and power_heuristic (handout §6.5)");
+	}
+}
+
+TEST_CASE("under a small light, next-event estimation is less noisy than BSDF sampling",
+          "[task6_nee][uses:estimate_direct][uses:power_heuristic]") {
+	// Square of half-side 0.1 at height 1 over a point facing it: one-sided z-test of var(BSDF) -
+	// var(NEE) > 0, with the sampling variance of a sample variance, (m4 - s^4) / n.
+	Scene scene = ceiling_light_scene(0.1f, 1.0f);
+	Pathtracer pt(scene, nee_settings());
+	Trace point = surface_point(Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f});
+	Vec3 up{0.0f, 1.0f, 0.0f};
+	Sample_Moments nee = moments(sum(student_direct_light(pt.scene, pt.settings, point, GREY, up, 100000, 31),
+	                                 bsdf_share(pt, point, up, 100000, 32)));
+	std::vector<double> bsdf(100000);
+	RNG rng(33);
+	for (double& v : bsdf) v = reflected_radiance_sample(scene, point, draw(pt, Strategy::bsdf, rng, point, GREY, up));
+	Sample_Moments alone = moments(bsdf);
+	double z = (alone.variance - nee.variance) / std::sqrt(alone.variance_of_variance() + nee.variance_of_variance());
+	double critical = stats::normal_quantile(1.0 - task6_nee::check_alpha());
+	INFO("per-sample variance: BSDF sampling " << alone.variance << ", next-event estimation " << nee.variance
+	                                           << " (z = " << z << ", must exceed " << critical
+	                                           << "): light samples are what make small lights cheap (handout §6.5)");
+	CHECK(z > critical);
+}
+
+TEST_CASE("the NEE integrator renders cornell_small_light like its reference image",
+          "[task6_nee][image][statistical][uses:estimate_direct][uses:power_heuristic]") {
+	check_renders_like_reference("cornell_small_light",
+	                             "--integrator nee with your estimate_direct and power_heuristic: each share must be "
+	                             "weighted by the power heuristic of its own density against the other's (handout §6.5).",
+	                             {{"power_heuristic", "the weights of the two strategies (handout §6.5)."},
+	                              {"estimate_direct", "the light-sampled share and its shadow ray (handout §6.5)."}},
+	                             Integrator::nee);
+}
