@@ -12,18 +12,24 @@
 
 namespace {
 
-// A record as the listener writes it: one test case per entry of `passed`.
-std::string record(bool finished, std::initializer_list<bool> passed, const std::string& fatal_error = "") {
-	std::string cases;
+// A record as the listener writes it: one test case per entry of `passed`, and the judge's list of
+// the test cases it has (`expected`, by default those that ran).
+std::string record(bool finished, std::initializer_list<bool> passed, const std::string& fatal_error = "",
+                   int expected = -1) {
+	std::string cases, names;
 	int i = 0;
 	for (bool p : passed) {
 		cases += std::string(cases.empty() ? "" : ",") + R"({"name": "case )" + std::to_string(i++) +
 		         R"(", "file": "tests/task1/x.cpp", "line": 3, "passed": )" + (p ? "true" : "false") +
 		         R"(, "failures": [], "more_failures": 0, "attachments": []})";
 	}
+	for (int n = 0; n < (expected < 0 ? i : expected); n++) {
+		names += std::string(names.empty() ? "" : ",") + "\"case " + std::to_string(n) + "\"";
+	}
 	std::string fatal = fatal_error.empty() ? "null" : "\"" + fatal_error + "\"";
-	return R"({"grader": "grader_task1_student", "finished": )" + std::string(finished ? "true" : "false") +
-	       R"(, "fatal_error": )" + fatal + R"(, "running": null, "test_cases": [)" + cases + "]}";
+	return R"({"grader": "judge_task1", "finished": )" + std::string(finished ? "true" : "false") +
+	       R"(, "fatal_error": )" + fatal + R"(, "running": null, "expected_test_cases": [)" + names +
+	       R"(], "test_cases": [)" + cases + "]}";
 }
 
 // Task 1's status from its files: exit status (none: not written) and record (empty: none).
@@ -42,6 +48,16 @@ TEST_CASE("report: a grader that ran to its summary is PASS when every test case
 	Task_Result failed = task1(fail, "3", record(true, {true, false}));
 	CHECK(failed.status == Status::fail);
 	CHECK(failed.passed_count() == 1);
+}
+
+TEST_CASE("report: a judge whose test cases did not all run is not PASS, even if those that ran passed") {
+	Temp_Dir missing, unlisted;
+	Task_Result some = task1(missing, "0", record(true, {true, true}, "", 3));
+	CHECK(some.status != Status::pass);
+	CHECK_THAT(some.why, Catch::Contains("case 2"));
+	std::string without_list = record(true, {true});
+	without_list.erase(without_list.find(R"("expected_test_cases")"), std::string(R"("expected_test_cases": ["case 0"], )").size());
+	CHECK(task1(unlisted, "0", without_list).status != Status::pass);
 }
 
 TEST_CASE("report: Catch2's exit status counts failed checks, so a status above 128 is not a crash by itself") {
