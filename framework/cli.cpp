@@ -1,6 +1,7 @@
 #include "cli.h"
 #include "cli_options.h"
 #include "error.h"
+#include "film_file.h"
 #include "follow_pixel.h"
 #include "image_io.h"
 #include "output_file.h"
@@ -28,13 +29,13 @@ std::string with_unit(double value) {
 // Every output is checked before rendering, so that a path that cannot be written fails at once
 // and no file is written.
 void check_outputs(const Cli_Options& options) {
-	for (const std::string& path : {options.png, options.exr, options.variance, options.nan_map}) {
+	for (const std::string& path : {options.png, options.exr, options.variance, options.nan_map, options.film}) {
 		if (!path.empty()) check_writable(path);
 	}
 }
 
 // Writes every requested image and returns their paths.
-std::vector<std::string> write_outputs(const Film& film, const Cli_Options& options) {
+std::vector<std::string> write_outputs(const Film& film, const Render_Settings& settings, const Cli_Options& options) {
 	std::vector<std::string> written;
 	auto write = [&](const std::string& path, auto&& writer) {
 		if (path.empty()) return;
@@ -45,6 +46,9 @@ std::vector<std::string> write_outputs(const Film& film, const Cli_Options& opti
 	write(options.exr, [&](const std::string& path) { write_exr(path, film.mean()); });
 	write(options.variance, [&](const std::string& path) { write_exr(path, film.variance()); });
 	write(options.nan_map, [&](const std::string& path) { write_png(path, film.non_finite_map()); });
+	write(options.film, [&](const std::string& path) {
+		write_film(path, film, Film_Origin{options.scene, settings.seed, settings.samples, options.pass, options.passes});
+	});
 	return written;
 }
 
@@ -60,14 +64,20 @@ void warn_non_finite(const Film& film, const Cli_Options& options, std::ostream&
 	}
 }
 
-void report(const Film& film, const Render_Settings& settings, View view, double seconds,
+void report(const Film& film, const Render_Settings& settings, const Cli_Options& options, double seconds,
             const std::vector<std::string>& written, std::ostream& out) {
 	for (const std::string& path : written) out << "wrote " << path << "\n";
-	double samples = double(settings.width) * settings.height * settings.samples;
+	View view = options.view;
+	// This pass's share: the sample indices options.pass - 1, + passes, ... below settings.samples.
+	uint32_t share = (settings.samples + options.passes - options.pass) / options.passes;
+	double samples = double(settings.width) * settings.height * share;
 	char time[32];
 	std::snprintf(time, sizeof time, "%.3f s", seconds);
-	out << "rendered " << settings.width << " x " << settings.height << " pixels, " << settings.samples
-	    << (settings.samples == 1 ? " sample" : " samples") << " each, view " << view_name(view);
+	out << "rendered " << settings.width << " x " << settings.height << " pixels, " << share
+	    << (share == 1 ? " sample" : " samples") << " each";
+	if (options.passes > 1)
+		out << " (pass " << options.pass << " of " << options.passes << " of " << settings.samples << " samples)";
+	out << ", view " << view_name(view);
 	if (view == View::path)
 		out << ", integrator " << (settings.integrator == Integrator::nee ? "nee" : "mixture") << ", sampler "
 		    << sampler_name(settings.sampler);
@@ -83,6 +93,8 @@ void render_and_write(const Scene& scene, const Cli_Options& options, std::ostre
 	Progress_Bar progress_bar(err, err_is_terminal && !options.quiet);
 	Render_Options render_options;
 	render_options.threads = options.threads;
+	render_options.pass = options.pass;
+	render_options.passes = options.passes;
 	render_options.progress = [&](size_t done, size_t total) { progress_bar.update(done, total); };
 
 	auto start = std::chrono::steady_clock::now();
@@ -90,8 +102,8 @@ void render_and_write(const Scene& scene, const Cli_Options& options, std::ostre
 	double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 	progress_bar.finish();
 
-	std::vector<std::string> written = write_outputs(film, options);
-	if (!options.quiet) report(film, pathtracer.settings, options.view, seconds, written, out);
+	std::vector<std::string> written = write_outputs(film, pathtracer.settings, options);
+	if (!options.quiet) report(film, pathtracer.settings, options, seconds, written, out);
 	if (film.non_finite() > 0) warn_non_finite(film, options, err);
 }
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <tuple>
 
 namespace {
 
@@ -53,6 +54,14 @@ std::pair<uint32_t, uint32_t> pixel(const std::string& option, const std::string
 	if (comma == std::string::npos) throw Input_Error(option + ": expected a pixel X,Y (e.g. 128,40), got '" + text + "'");
 	return {whole_number<uint32_t>(option + " X", text.substr(0, comma), 0, 16383),
 	        whole_number<uint32_t>(option + " Y", text.substr(comma + 1), 0, 16383)};
+}
+
+// "P/N" with 1 <= P <= N.
+std::pair<uint32_t, uint32_t> pass_of(const std::string& option, const std::string& text) {
+	size_t slash = text.find('/');
+	if (slash == std::string::npos) throw Input_Error(option + ": expected a pass P/N (e.g. 2/8), got '" + text + "'");
+	uint32_t passes = whole_number<uint32_t>(option + " N", text.substr(slash + 1), 1, 1000000);
+	return {whole_number<uint32_t>(option + " P", text.substr(0, slash), 1, passes), passes};
 }
 
 // "uniform" or "importance": whether to importance-sample the environment image.
@@ -107,6 +116,14 @@ const std::vector<Option>& option_table() {
 		 [](auto& o, auto& name, auto& v) { o.exr = output_file(name, v, ".exr"); }},
 		{"--variance", "FILE.exr", "also write the per-pixel sample variance s^2 (the mean's is s^2 / spp)",
 		 [](auto& o, auto& name, auto& v) { o.variance = output_file(name, v, ".exr"); }},
+		{"--film", "FILE.exr",
+		 "also write the film: each pixel's mean, variance and sample count, exactly; the passes of a split "
+		 "render are merged from these (merge_films, ./lab merge)",
+		 [](auto& o, auto& name, auto& v) { o.film = output_file(name, v, ".exr"); }},
+		{"--pass", "P/N",
+		 "render pass P of N: only the samples s with s % N = P - 1, so that N machines share a render; "
+		 "needs --film",
+		 [](auto& o, auto& name, auto& v) { std::tie(o.pass, o.passes) = pass_of(name, v); }},
 		{"--nan-map", "FILE.png", "also write a map of the pixels that had NaN or infinite samples (white)",
 		 [](auto& o, auto& name, auto& v) { o.nan_map = output_file(name, v, ".png"); }},
 		{"--spp", "N", "samples per pixel, 1 to 1000000",
@@ -224,7 +241,7 @@ void apply_option(const std::vector<std::string>& args, size_t& i, Cli_Options& 
 
 // Two outputs in one file would silently overwrite each other.
 void require_distinct_outputs(const Cli_Options& options) {
-	std::vector<std::string> outputs{options.png, options.exr, options.variance, options.nan_map};
+	std::vector<std::string> outputs{options.png, options.exr, options.variance, options.nan_map, options.film};
 	std::sort(outputs.begin(), outputs.end());
 	for (size_t i = 1; i < outputs.size(); i++) {
 		if (!outputs[i].empty() && outputs[i] == outputs[i - 1]) {
@@ -251,6 +268,10 @@ Cli_Options parse_cli_options(const std::vector<std::string>& args) {
 		throw Input_Error("no scene file given (usage: " + program_name(args) + " SCENE.json [options])");
 	}
 	if (options.png.empty()) options.png = default_png(program_name(args), options.scene);
+	if (options.passes > 1 && options.film.empty()) {
+		throw Input_Error("--pass " + std::to_string(options.pass) + "/" + std::to_string(options.passes) +
+		                  ": a pass is one share of a render: write its film with --film FILE.exr, to merge");
+	}
 
 	require_distinct_outputs(options);
 	return options;

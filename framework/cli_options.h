@@ -13,6 +13,8 @@ struct Cli_Options {
 	// Output files; png defaults to out/<scene stem>.png, from pathtracer_student to
 	// out/<scene stem>_student.png.
 	std::string png, exr, variance, nan_map;
+	std::string film; // --film: the film's statistics, for merging passes (film_file.h)
+	uint32_t pass = 1, passes = 1; // --pass P/N: this render's share of the samples (render.h)
 	std::optional<uint32_t> samples, width, height, max_depth;
 	std::optional<uint64_t> seed;
 	uint32_t threads = 0; // 0 = all hardware threads

@@ -12,6 +12,16 @@ void Pixel_Stats::add(Spectrum sample) {
 	m2 += delta * (x - mean);
 }
 
+void Pixel_Stats::merge(const Pixel_Stats& other) {
+	non_finite += other.non_finite;
+	if (other.count == 0) return;
+	double n_a = count, n_b = other.count, n = n_a + n_b;
+	glm::dvec3 delta = other.mean - mean;
+	mean += delta * (n_b / n);
+	m2 += other.m2 + delta * delta * (n_a * n_b / n);
+	count += other.count;
+}
+
 HDR_Image Film::mean() const {
 	HDR_Image image(w, h);
 	for (size_t i = 0; i < pixels.size(); i++) image.pixels[i] = Spectrum(pixels[i].mean);

@@ -8,6 +8,9 @@
 struct Pixel_Stats {
 	// Welford's online algorithm, in double precision per channel.
 	void add(Spectrum sample);
+	// Adds another set of samples' statistics, as if its samples had been added one by one (Chan,
+	// Golub and LeVeque 1979): the same sums in another order.
+	void merge(const Pixel_Stats& other);
 
 	uint32_t count = 0;     // finite samples added
 	uint32_t non_finite = 0;

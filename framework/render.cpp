@@ -4,6 +4,8 @@
 #include <atomic>
 #include <numeric>
 #include <random>
+#include <stdexcept>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -20,12 +22,13 @@ std::vector<Tile> make_tiles(uint32_t w, uint32_t h, uint32_t size) {
 	return tiles;
 }
 
-void render_tile(const Pathtracer& pt, const Render_Settings& settings, const Tile& tile, Film& film) {
+void render_tile(const Pathtracer& pt, const Render_Settings& settings, const Render_Options& options, const Tile& tile,
+                 Film& film) {
 	for (uint32_t y = tile.y0; y < tile.y1; y++) {
 		for (uint32_t x = tile.x0; x < tile.x1; x++) {
 			size_t index = size_t(y) * film.w + x;
 			Pixel_Stats& pixel = film.pixels[index];
-			for (uint32_t s = 0; s < settings.samples; s++) {
+			for (uint32_t s = options.pass - 1; s < settings.samples; s += options.passes) {
 				RNG rng = RNG::for_sample(settings.seed, index, s, settings.sampler);
 				pixel.add(pt.trace_pixel(x, y, rng));
 			}
@@ -47,6 +50,10 @@ uint32_t tile_size(const Render_Settings& settings, const Render_Options& option
 } // namespace
 
 Film render(const Pathtracer& pathtracer, const Render_Options& options) {
+	if (options.passes == 0 || options.pass < 1 || options.pass > options.passes) {
+		throw std::invalid_argument("render: pass " + std::to_string(options.pass) + " of " +
+		                            std::to_string(options.passes) + " (expected 1 <= pass <= passes)");
+	}
 	const Render_Settings& settings = pathtracer.settings;
 	Film film(settings.width, settings.height);
 	uint32_t threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
@@ -56,7 +63,7 @@ Film render(const Pathtracer& pathtracer, const Render_Options& options) {
 	std::atomic<size_t> next{0}, done{0};
 	auto worker = [&]() {
 		for (size_t i; (i = next.fetch_add(1)) < tiles.size();) {
-			render_tile(pathtracer, settings, tiles[i], film);
+			render_tile(pathtracer, settings, options, tiles[i], film);
 			size_t finished = done.fetch_add(1) + 1;
 			if (options.progress) options.progress(finished, tiles.size());
 		}

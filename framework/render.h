@@ -13,7 +13,11 @@ struct Render_Options {
 	bool shuffle_tiles = false; // render tiles in a random order (tests determinism)
 	// Called from worker threads with (finished tiles, total tiles); may be empty.
 	std::function<void(size_t, size_t)> progress;
+	// A share of the samples, for a render split over machines (--pass, film_file.h): pass P of N
+	// draws the samples with index s % N == P - 1 of the settings' samples. The N passes draw every
+	// sample of the whole render exactly once, each with the generator it has there.
+	uint32_t pass = 1, passes = 1;
 };
 
-// Renders pathtracer.settings.samples samples of every pixel.
+// Renders pathtracer.settings.samples samples of every pixel (of them, options' pass's share).
 Film render(const Pathtracer& pathtracer, const Render_Options& options = {});

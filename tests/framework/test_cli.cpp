@@ -3,6 +3,7 @@
 // writes the images it reports.
 #include "cli.h"
 #include "cli_options.h"
+#include "film_file.h"
 #include "image_io.h"
 #include "scene_loader.h"
 #include "temp_dir.h"
@@ -158,6 +159,11 @@ TEST_CASE("cli: bad input gives one 'error:' line naming the problem, a non-zero
 		{{"sphere.json", "--view", "albedo"}, {"--view", "albedo"}},
 		{{"sphere.json", "--out", "image.jpg"}, {"--out", ".png"}},
 		{{"sphere.json", "--exr", "image.png"}, {"--exr", ".exr"}},
+		{{"sphere.json", "--pass", "2/4"}, {"--pass 2/4", "--film"}},
+		{{"sphere.json", "--pass", "5/4", "--film", "f.exr"}, {"--pass P", "5"}},
+		{{"sphere.json", "--pass", "0/4", "--film", "f.exr"}, {"--pass P", "0"}},
+		{{"sphere.json", "--pass", "3", "--film", "f.exr"}, {"--pass", "P/N"}},
+		{{"sphere.json", "--film", "f.png"}, {"--film", ".exr"}},
 		{{"sphere.json", "--variance", "variance.png"}, {"--variance", ".exr"}},
 		{{"sphere.json", "--nan-map", "nan.exr"}, {"--nan-map", ".png"}},
 		{{"sphere.json", "--exr", "same.exr", "--variance", "same.exr"}, {"same.exr"}},
@@ -209,6 +215,26 @@ TEST_CASE("cli: a render writes the PNG (default out/<scene>.png), the EXRs and 
 	CHECK(result.out.find("samples/s") != std::string::npos);
 	CHECK(result.out.find("non-finite samples: 0\n") != std::string::npos);
 	CHECK(result.err.empty()); // no progress bar: err is not a terminal in this test
+}
+
+TEST_CASE("cli: --pass P/N --film renders one share of the samples, and the films of all N merge into the whole") {
+	In_Temp_Dir here;
+	require_render({"sphere.json", "--spp", "5", "--film", "whole.exr", "--threads", "2"});
+	std::vector<std::string> passes;
+	for (const char* pass : {"1/2", "2/2"}) {
+		passes.push_back(std::string("pass") + pass[0] + ".exr");
+		Run result = require_render({"sphere.json", "--spp", "5", "--pass", pass, "--film", passes.back()});
+		CHECK(result.out.find(std::string("(pass ") + pass[0] + " of 2 of 5 samples)") != std::string::npos);
+	}
+	Film_File whole = read_film("whole.exr"), merged = merge_films(passes);
+	CHECK(read_film(passes[0]).film.pixels[0].count == 3); // samples 0, 2, 4
+	CHECK(read_film(passes[1]).film.pixels[0].count == 2); // samples 1, 3
+	CHECK(merged.origin.scene == "sphere.json");
+	for (size_t i = 0; i < whole.film.pixels.size(); i++) {
+		INFO("pixel " << i);
+		CHECK(merged.film.pixels[i].count == whole.film.pixels[i].count);
+		CHECK(glm::length(merged.film.pixels[i].mean - whole.film.pixels[i].mean) <= 1e-12);
+	}
 }
 
 TEST_CASE("cli: --width, --height, --spp and --exposure override the scene for this run") {
