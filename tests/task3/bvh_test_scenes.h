@@ -35,7 +35,8 @@ std::vector<BBox> boxes_of(const std::vector<Triangle>& triangles);
 // The closest hits the grader expects for rays at a set of triangles: the reference BVH's, built
 // here, and wherever a student's answer differs from it, the final word of brute force (every
 // triangle tested with the reference's Triangle::hit, keeping every record that ties with the
-// closest, e.g. a ray through an edge shared by two triangles).
+// closest, e.g. a ray through an edge shared by two triangles, or lies so close behind it that the
+// box and triangle tests' rounding may put it first).
 class Closest_Hits {
 public:
 	explicit Closest_Hits(const std::vector<Triangle>& triangles);
