@@ -26,7 +26,12 @@ Trace Instance::hit(const Ray& ray) const {
 	Ray local = identity ? ray
 	                     : Ray(transform_point(to_local, ray.point), transform_direction(to_local, ray.dir),
 	                           ray.dist_bounds, ray.depth);
-	Trace trace = std::visit([&](const auto& s) { return s.hit(local); }, shape);
+	Trace trace = world_record(ray, std::visit([&](const auto& s) { return s.hit(local); }, shape));
+	report<Instance_Tested>(trace, *this, ray);
+	return trace;
+}
+
+Trace Instance::world_record(const Ray& ray, Trace trace) const {
 	if (trace.hit) {
 		trace.origin = ray.point;
 		trace.position = ray.at(trace.distance);
@@ -34,6 +39,5 @@ Trace Instance::hit(const Ray& ray) const {
 		trace.object = index;
 		trace.material = material;
 	}
-	report<Instance_Tested>(trace, *this, ray);
 	return trace;
 }

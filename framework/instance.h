@@ -13,6 +13,9 @@ struct Instance {
 	// Intersects the shape in local space (ray parameters t are unchanged by affine transforms)
 	// and returns the hit in world space, with `object` and `material` filled in.
 	Trace hit(const Ray& ray) const;
+	// What hit() makes of the shape's own record `local` of `ray`: the hit in world space, with
+	// `object` and `material` filled in.
+	Trace world_record(const Ray& ray, Trace local) const;
 	BBox bbox() const {
 		return world_bbox;
 	}

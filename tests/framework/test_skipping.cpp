@@ -60,6 +60,41 @@ TEST_CASE("a scene of a handful of objects is traced without a hierarchy", "[fra
 	CHECK(cornell.bvh.nodes.size() > 1);
 }
 
+TEST_CASE("objects without a transform of their own share one BVH, and their hits are the objects' own",
+          "[framework][skip]") {
+	// (framework_tests links the reference tasks, so the scene's queries go through the fast
+	// accelerator, accel/fast/flat_meshes.cpp; BVH::hit over the objects is the lab's two levels.)
+	std::mt19937 random(11);
+	std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+	for (const char* file : {"scenes/cornell_box.json", "scenes/cornell_spheres.json"}) {
+		Scene scene = load_scene(file);
+		BBox box = scene.bvh.bbox();
+		size_t spheres = 0, hits = 0;
+		for (const Instance& object : scene.bvh.primitives) spheres += std::holds_alternative<Sphere>(object.shape);
+		for (int i = 0; i < 20000; i++) {
+			Vec3 from = box.min + Vec3{unit(random), unit(random), unit(random)} * (box.max - box.min);
+			Vec3 dir = glm::normalize(Vec3{unit(random), unit(random), unit(random)} - 0.5f);
+			Ray ray(from, dir);
+			Call_Counter calls;
+			Trace flat = scene.hit(ray);
+			INFO(file << ", ray " << i << ": every untransformed mesh is in one BVH, so Instance::hit runs only for "
+			          << spheres << " spheres");
+			REQUIRE(calls.instance_tests <= spheres);
+			Trace two_levels = scene.bvh.hit(ray);
+			REQUIRE(flat.hit == two_levels.hit);
+			if (!flat.hit) continue;
+			hits++;
+			CHECK(flat.distance == two_levels.distance);
+			CHECK(flat.object == two_levels.object);
+			CHECK(flat.material == two_levels.material);
+			CHECK(flat.normal == two_levels.normal);
+			CHECK(flat.position == two_levels.position);
+			CHECK(scene.occluded(ray) == true);
+		}
+		CHECK(hits > 10000);
+	}
+}
+
 TEST_CASE("paths at mirrors and glass, and scenes without lights, sample no lights", "[framework][skip]") {
 	// (The light is a black diffuse surface: paths end there, sampling nothing.)
 	SECTION("a diffuse sphere under a light samples it (the counters count)") {

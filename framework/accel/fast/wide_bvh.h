@@ -3,8 +3,11 @@
 // packs, laid out for 4-wide vector arithmetic (bench/README.md, "How the BVH queries are made
 // fast"). Built from any task-3 tree; used only where tasks 2 and 3 are both the reference.
 #include "bvh.h"
+#include "instance.h"
+#include "tri_mesh.h"
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 // The binary tree with two of every three levels folded in: a node has up to eight children, whose
@@ -32,10 +35,30 @@ struct alignas(32) Triangle_Pack { // 160 bytes, against 4 x 72 for the Triangle
 	uint32_t index[4]; // the triangle in BVH::primitives
 };
 
+struct Flat_Meshes;
+
 struct Wide_BVH {
 	std::vector<Wide_Node> nodes;          // nodes[0] is the root; empty without primitives
 	std::vector<Triangle_Pack> triangle_packs; // BVH<Triangle> only: each leaf's packs, consecutive
+	// BVH<Instance> only, where the scene allows it (flat_meshes.cpp): its objects as Flat_Meshes,
+	// queried instead of `nodes`.
+	std::shared_ptr<const Flat_Meshes> flat;
+};
+
+// The objects of a scene that sit where they were modelled (no transform of their own) and are
+// meshes, with their triangles in one BVH: a ray meets one tree instead of a top-level tree and a
+// tree per object. The other objects, at most one wide node of them, are tested after it.
+struct Flat_Meshes {
+	BVH<Triangle> triangles;     // every flat mesh's triangles (their local space is the world)
+	Wide_BVH wide;               // made from `triangles`
+	std::vector<uint32_t> owner; // triangles.primitives[i] is a triangle of top-level primitive owner[i]
+	Wide_BVH others;             // one node: a leaf per other object (its index in the top level)
 };
 
 // Folds a finished BVH into a Wide_BVH (wide_bvh_build.cpp).
 template<typename Primitive> Wide_BVH widen(const BVH<Primitive>& bvh);
+
+// The flat meshes of a scene's objects (flat_meshes.cpp), or null where they would not pay: fewer
+// than two flat meshes, more other objects than a wide node holds, or a triangle shared by two
+// objects (whose owner a hit could not tell).
+std::shared_ptr<const Flat_Meshes> flatten(const BVH<Instance>& objects);

@@ -195,21 +195,55 @@ Closest_Triangle closest_triangle(const BVH<Triangle>& bvh, const Wide_BVH& wide
 
 // The closest triangle's record (its normal, position): Triangle::hit on the whole ray, so that
 // the result is the lab's test's bit for bit. If it misses (only where the pack rounded otherwise:
-// fused multiply-add), the query starts over with `exact`: every candidate to Triangle::hit. The
-// record is one variable returned all the way, so Triangle::hit writes it where the caller wants it.
-Trace record(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, uint32_t best) {
+// fused multiply-add), the query starts over with `exact`: every candidate to Triangle::hit, and
+// `best` becomes the triangle it finds. The record is one variable returned all the way, so
+// Triangle::hit writes it where the caller wants it.
+Trace record(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, uint32_t& best) {
 	Trace trace = bvh.primitives[best].hit(ray);
 	if (!trace.hit) {
-		uint32_t exact = closest_triangle(bvh, wide, ray, true).primitive;
-		if (exact != NONE) trace = bvh.primitives[exact].hit(ray);
+		best = closest_triangle(bvh, wide, ray, true).primitive;
+		if (best != NONE) trace = bvh.primitives[best].hit(ray);
 	}
 	return trace;
 }
 
+// A scene's closest hit through its flat meshes (wide_bvh.h): the closest triangle of the flat
+// meshes, then the other objects up to it; a triangle's record is made as its object's hit() makes
+// it (Triangle::hit, then Instance::world_record).
+Trace flat_hit(const BVH<Instance>& objects, const Flat_Meshes& flat, const Ray& ray) {
+	Closest_Triangle nearest = closest_triangle(flat.triangles, flat.wide, ray, false);
+	Instance_Leaves<false> others{objects, Trace{}};
+	if (!flat.others.nodes.empty()) {
+		Ray rest = ray;
+		rest.dist_bounds.y = std::min(rest.dist_bounds.y, nearest.t);
+		traverse<false>(flat.others, rest, others);
+		if (others.closest.hit) return others.closest;
+	}
+	if (nearest.primitive == NONE) return Trace{};
+	uint32_t best = nearest.primitive;
+	Trace trace = record(flat.triangles, flat.wide, ray, best);
+	if (best == NONE) return Trace{};
+	return objects.primitives[flat.owner[best]].world_record(ray, trace);
+}
+
+bool flat_occluded(const BVH<Instance>& objects, const Flat_Meshes& flat, const Ray& ray) {
+	Triangle_Leaves<true> triangles{flat.triangles, flat.wide, false};
+	if (traverse<true>(flat.wide, ray, triangles)) return true;
+	Instance_Leaves<true> others{objects, Trace{}};
+	return traverse<true>(flat.others, ray, others);
+}
+
+size_t bytes_of(const Wide_BVH& wide) {
+	return wide.nodes.capacity() * sizeof(Wide_Node) + wide.triangle_packs.capacity() * sizeof(Triangle_Pack);
+}
+
 } // namespace
 
-template<typename Primitive>
-Accelerator<Primitive>::Accelerator(const BVH<Primitive>& bvh) : wide(std::make_shared<const Wide_BVH>(widen(bvh))) {
+template<typename Primitive> Accelerator<Primitive>::Accelerator(const BVH<Primitive>& bvh) {
+	Wide_BVH folded;
+	if constexpr (std::is_same_v<Primitive, Instance>) folded.flat = flatten(bvh);
+	if (!folded.flat) folded = widen(bvh);
+	wide = std::make_shared<const Wide_BVH>(std::move(folded));
 }
 
 template<typename Primitive> Trace Accelerator<Primitive>::hit(const BVH<Primitive>& bvh, const Ray& ray) const {
@@ -219,6 +253,7 @@ template<typename Primitive> Trace Accelerator<Primitive>::hit(const BVH<Primiti
 		if (best == NONE) return Trace{};
 		return record(bvh, *wide, ray, best);
 	} else {
+		if (wide->flat) return flat_hit(bvh, *wide->flat, ray);
 		Instance_Leaves<false> leaves{bvh, Trace{}};
 		traverse<false>(*wide, ray, leaves);
 		return leaves.closest;
@@ -231,6 +266,7 @@ template<typename Primitive> bool Accelerator<Primitive>::occluded(const BVH<Pri
 		Triangle_Leaves<true> leaves{bvh, *wide, false};
 		return traverse<true>(*wide, ray, leaves);
 	} else {
+		if (wide->flat) return flat_occluded(bvh, *wide->flat, ray);
 		Instance_Leaves<true> leaves{bvh, Trace{}};
 		return traverse<true>(*wide, ray, leaves);
 	}
@@ -238,7 +274,14 @@ template<typename Primitive> bool Accelerator<Primitive>::occluded(const BVH<Pri
 
 template<typename Primitive> size_t Accelerator<Primitive>::bytes() const {
 	if (!wide) return 0;
-	return wide->nodes.capacity() * sizeof(Wide_Node) + wide->triangle_packs.capacity() * sizeof(Triangle_Pack);
+	size_t bytes = bytes_of(*wide);
+	if (wide->flat) {
+		const Flat_Meshes& flat = *wide->flat;
+		bytes += bytes_of(flat.wide) + bytes_of(flat.others) + flat.owner.capacity() * sizeof(uint32_t) +
+		         flat.triangles.nodes.capacity() * sizeof(flat.triangles.nodes[0]) +
+		         flat.triangles.primitives.capacity() * sizeof(Triangle);
+	}
+	return bytes;
 }
 
 template class Accelerator<Triangle>;
