@@ -19,8 +19,8 @@ struct Cli_Options {
 	View view = View::path;
 	float exposure = 0.0f; // stops, for the PNG
 	bool quiet = false;
-	// Strategy switches (bench/README.md): --no-light-sampling, --no-roulette, --env-sampling,
-	// --sampler, --integrator, --light-choice.
+	// Strategy switches, each the same image with other noise: --no-light-sampling, --no-roulette,
+	// --env-sampling, --sampler, --integrator, --light-choice.
 	bool light_sampling = true, russian_roulette = true;
 	std::optional<bool> env_importance_sampling; // unset: as the scene says
 	Sampler sampler = Sampler::sobol;             // renders default to low-discrepancy samples

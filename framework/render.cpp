@@ -34,8 +34,8 @@ void render_tile(const Pathtracer& pt, const Render_Settings& settings, const Ti
 }
 
 // options.tile_size, or smaller for a small film: at least TILES_PER_THREAD tiles for each thread,
-// so that the threads finish within a small tile of each other (bench/README.md, "Render
-// throughput"). The image does not depend on it.
+// so that the threads finish within a small tile of each other, and none is left working alone
+// at the end. The image does not depend on it.
 uint32_t tile_size(const Render_Settings& settings, const Render_Options& options, uint32_t threads) {
 	constexpr uint64_t TILES_PER_THREAD = 16;
 	constexpr uint32_t SMALLEST = 4;
