@@ -116,7 +116,17 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
 			out << cli_usage(args);
 			return 0;
 		}
-		Cli_Options options = parse_cli_options(args);
+		if (wants_version(args)) {
+			out << cli_version(args);
+			return 0;
+		}
+		Cli_Options options;
+		try {
+			options = parse_cli_options(args);
+		} catch (const Input_Error& e) {
+			err << "error: " << e.what() << "\n";
+			return CLI_USAGE_ERROR;
+		}
 		if (!options.integrator) options.integrator = integrator;
 		Scene scene = load_scene(options.scene);
 		override_scene(scene, options);

@@ -48,6 +48,10 @@ void override_environment(Scene& scene, const Cli_Options& options);
 // the picture is never stretched).
 void override_scene(Scene& scene, const Cli_Options& options);
 
-// --help: whether it was asked for, and the text.
+// --help (or -h): whether it was asked for, and the text, within 80 columns.
 bool wants_help(const std::vector<std::string>& args);
 std::string cli_usage(const std::vector<std::string>& args);
+
+// --version: whether it was asked for, and the line "<program> (PathTracer Lab) <version>".
+bool wants_version(const std::vector<std::string>& args);
+std::string cli_version(const std::vector<std::string>& args);

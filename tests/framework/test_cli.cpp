@@ -127,6 +127,41 @@ TEST_CASE("cli: --help explains every option and every view, and succeeds") {
 	CHECK(run({"sphere.json", "--spp", "0", "--help"}).status == 0);
 }
 
+TEST_CASE("cli: -h is --help, and every line of the help fits 80 columns") {
+	In_Temp_Dir here;
+	Run help = run({"--help"});
+	Run h = run({"-h"});
+	CHECK(h.status == 0);
+	CHECK(h.out == help.out);
+	std::istringstream lines(help.out);
+	int number = 1;
+	for (std::string line; std::getline(lines, line); number++) {
+		INFO("line " << number << " of --help is " << line.size() << " characters long:\n" << line);
+		CHECK(line.size() <= 80);
+	}
+}
+
+TEST_CASE("cli: --version prints the program and the lab's version, and succeeds") {
+	In_Temp_Dir here;
+	Run result = run({"--version"});
+	CHECK(result.status == 0);
+	CHECK(result.err.empty());
+	CHECK(result.out.rfind("pathtracer_reference (PathTracer Lab) ", 0) == 0);
+	CHECK(result.out.find("unknown") == std::string::npos); // CMake gave the project's VERSION
+	CHECK(here.new_files().empty());
+}
+
+TEST_CASE("cli: a bad command line exits with status 2 (as ./lab's usage errors), a bad scene with 1") {
+	In_Temp_Dir here;
+	for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+	         {}, {"sphere.json", "--bogus"}, {"sphere.json", "--spp", "0"}, {"sphere.json", "other.json"}}) {
+		INFO("pathtracer_reference " << joined(args));
+		CHECK(run(args).status == 2);
+	}
+	CHECK(run({"missing.json"}).status == 1);
+	CHECK(run({"broken.json"}).status == 1);
+}
+
 TEST_CASE("cli: bad input gives one 'error:' line naming the problem, a non-zero status and no file") {
 	In_Temp_Dir here;
 	struct Case {
