@@ -54,6 +54,7 @@ Film render(const Pathtracer& pathtracer, const Render_Options& options) {
 	if (options.shuffle_tiles) std::shuffle(tiles.begin(), tiles.end(), std::mt19937(12345));
 	threads = std::min<uint32_t>(threads, uint32_t(tiles.size()));
 	std::atomic<size_t> next{0}, done{0};
+	if (options.progress) options.progress(0, tiles.size()); // the bar appears at once
 	auto worker = [&]() {
 		for (size_t i; (i = next.fetch_add(1)) < tiles.size();) {
 			render_tile(pathtracer, settings, tiles[i], film);
