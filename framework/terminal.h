@@ -3,8 +3,8 @@
 //   [##############----------------]  47%  ETA 0:12
 // It draws only when enabled (the renderer enables it when stderr is a terminal and --quiet is
 // not given), so logs and pipes stay clean. update() may be called from any thread. The line is
-// shorter than the terminal is wide (the bar shrinks, and goes on a terminal narrower than 20
-// columns), so that it never wraps: a wrapped line cannot be redrawn in place.
+// shorter than the terminal is wide (the bar shrinks, and is left out when fewer than 10 columns
+// remain for it), so that it never wraps: a wrapped line cannot be redrawn in place.
 #include <chrono>
 #include <cstddef>
 #include <iosfwd>
