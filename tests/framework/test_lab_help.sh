@@ -6,7 +6,7 @@
 #       build, install or test nothing (cmake, ctest, apt-get and dpkg-query are stand-ins that
 #       record any call, and the build folder must not appear);
 #   (c) usage errors exit with status 2: an unknown command, help for one, a bad task number;
-#   (d) in a student release (a lab script without reference/ beside it) the help lists no command
+#   (d) in a student release (a lab script with no reference folder beside it) the help lists no command
 #       marked (instructors), and asking for one is a usage error.
 #
 # usage: test_lab_help.sh REPOSITORY_ROOT
@@ -69,7 +69,7 @@ expect_usage_error grade 9
 expect_usage_error grade
 echo "lab help test: usage errors exit with status 2"
 
-# A student release's lab: no reference/ beside it.
+# A student release's lab: no reference folder beside it.
 mkdir "$tmp/release"
 cp "$root/lab" "$tmp/release/lab"
 "$tmp/release/lab" help >"$tmp/release_help.txt"
