@@ -64,8 +64,24 @@ void warn_non_finite(const Film& film, const Cli_Options& options, std::ostream&
 	}
 }
 
-void report(const Film& film, const Render_Settings& settings, const Cli_Options& options, double seconds,
+std::string seconds_text(double seconds) {
+	char text[32];
+	std::snprintf(text, sizeof text, "%.3f s", seconds);
+	return text;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+	return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The time a run took: loading the scene (a large mesh and its BVH take seconds) and rendering.
+struct Run_Times {
+	double loading = 0.0, rendering = 0.0;
+};
+
+void report(const Film& film, const Render_Settings& settings, const Cli_Options& options, const Run_Times& times,
             const std::vector<std::string>& written, std::ostream& out) {
+	double seconds = times.rendering;
 	for (const std::string& path : written) out << "wrote " << path << "\n";
 	View view = options.view;
 	// This pass's share: the sample indices options.pass - 1, + passes, ... below settings.samples.
@@ -82,13 +98,16 @@ void report(const Film& film, const Render_Settings& settings, const Cli_Options
 		out << ", integrator " << (settings.integrator == Integrator::nee ? "nee" : "mixture") << ", sampler "
 		    << sampler_name(settings.sampler);
 	out << ", in " << time << "\n";
-	out << "speed: " << with_unit(samples / std::max(seconds, 1e-9)) << " samples/s\n";
+	out << "total: " << seconds_text(times.loading + times.rendering) << " (loading " << seconds_text(times.loading)
+	    << ", rendering " << seconds_text(times.rendering) << ")\n";
+	out << "speed: " << with_unit(samples / std::max(seconds, 1e-9)) << " samples/s (rendering)\n";
 	out << "non-finite samples: " << film.non_finite() << "\n";
 }
 
-void render_and_write(const Scene& scene, const Cli_Options& options, std::ostream& out, std::ostream& err,
-                      bool err_is_terminal) {
+void render_and_write(const Scene& scene, const Cli_Options& options, Run_Times times, std::ostream& out,
+                      std::ostream& err, bool err_is_terminal) {
 	check_outputs(options);
+	if (!options.quiet) out << "loaded " << options.scene << " in " << seconds_text(times.loading) << "\n" << std::flush;
 	Pathtracer pathtracer(scene, scene.settings, options.view);
 	Progress_Bar progress_bar(err, err_is_terminal && !options.quiet);
 	Render_Options render_options;
@@ -99,11 +118,11 @@ void render_and_write(const Scene& scene, const Cli_Options& options, std::ostre
 
 	auto start = std::chrono::steady_clock::now();
 	Film film = render(pathtracer, render_options);
-	double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+	times.rendering = seconds_since(start);
 	progress_bar.finish();
 
 	std::vector<std::string> written = write_outputs(film, pathtracer.settings, options);
-	if (!options.quiet) report(film, pathtracer.settings, options, seconds, written, out);
+	if (!options.quiet) report(film, pathtracer.settings, options, times, written, out);
 	if (film.non_finite() > 0) warn_non_finite(film, options, err);
 }
 
@@ -123,23 +142,47 @@ void follow(const Scene& scene, const Cli_Options& options, std::ostream& out) {
 
 int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err, bool err_is_terminal,
             Integrator integrator) {
+	bool loading_line = false; // "loading SCENE ..." is on the terminal, to be erased
 	try {
 		if (wants_help(args)) {
 			out << cli_usage(args);
 			return 0;
 		}
-		Cli_Options options = parse_cli_options(args);
+		if (wants_version(args)) {
+			out << cli_version(args);
+			return 0;
+		}
+		Cli_Options options;
+		try {
+			options = parse_cli_options(args);
+		} catch (const Input_Error& e) {
+			err << "error: " << e.what() << "\n";
+			return CLI_USAGE_ERROR;
+		}
 		if (!options.integrator) options.integrator = integrator;
+		// Loading is shown as it happens (a large mesh and its BVH take seconds) and then reported.
+		bool show_loading = !options.quiet && !options.follow_pixel;
+		std::string loading = "loading " + options.scene + " ...";
+		if (show_loading && err_is_terminal) {
+			err << loading << std::flush;
+			loading_line = true;
+		}
+		auto start = std::chrono::steady_clock::now();
 		Scene scene = load_scene(options.scene);
 		override_scene(scene, options);
+		Run_Times times;
+		times.loading = seconds_since(start);
+		if (loading_line) err << '\r' << std::string(loading.size(), ' ') << '\r' << std::flush;
+		loading_line = false;
 		if (options.follow_pixel) {
 			follow(scene, options, out);
 		} else {
-			render_and_write(scene, options, out, err, err_is_terminal);
+			render_and_write(scene, options, times, out, err, err_is_terminal);
 		}
 		return 0;
 	} catch (const std::exception& e) {
 		// Input_Error from the options, the scene or an image file; std::bad_alloc for a film too large.
+		if (loading_line) err << "\n";
 		err << "error: " << e.what() << "\n";
 		return 1;
 	}

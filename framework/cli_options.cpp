@@ -9,7 +9,15 @@
 #include <functional>
 #include <tuple>
 
+// The lab's version (the project's VERSION in CMakeLists.txt), for --version.
+#ifndef LAB_VERSION
+#define LAB_VERSION "unknown"
+#endif
+
 namespace {
+
+// The help fits an 80-column terminal.
+constexpr size_t HELP_WIDTH = 80;
 
 // ---- Values -------------------------------------------------------------------------------------
 
@@ -172,7 +180,8 @@ const std::vector<Option>& option_table() {
 		 [](auto& o, auto& name, auto& v) { o.light_choice = light_choice_named(name, v); }},
 		{"--quiet", nullptr, "no progress bar and no summary (errors and warnings are still printed)",
 		 [](auto& o, auto&, auto&) { o.quiet = true; }},
-		{"--help", nullptr, "print this help and exit", [](auto&, auto&, auto&) {}},
+		{"--help", nullptr, "print this help and exit (also -h)", [](auto&, auto&, auto&) {}},
+		{"--version", nullptr, "print the lab's version and exit", [](auto&, auto&, auto&) {}},
 	};
 	return table;
 }
@@ -195,24 +204,65 @@ std::string default_png(const std::string& program, const std::string& scene) {
 	return "out/" + std::filesystem::path(scene).stem().string() + suffix + ".png";
 }
 
+// The end of the word that starts at `start`: the next space outside <...> (a placeholder such as
+// <scene name> stays on one line), or the end of the text.
+size_t word_end(const std::string& text, size_t start) {
+	bool in_placeholder = false;
+	for (size_t i = start; i < text.size(); i++) {
+		if (text[i] == '<') in_placeholder = true;
+		if (text[i] == '>') in_placeholder = false;
+		if (text[i] == ' ' && !in_placeholder) return i;
+	}
+	return text.size();
+}
+
+// `text` broken into lines of at most `width` characters at spaces; every line after the first is
+// indented by `indent` spaces (the first one's indent is the caller's).
+std::string wrapped(const std::string& text, size_t indent, size_t first_column, size_t width) {
+	std::string out, line;
+	size_t column = first_column;
+	size_t start = 0;
+	while (start < text.size()) {
+		size_t end = word_end(text, start);
+		std::string word = text.substr(start, end - start);
+		start = end + 1;
+		if (!line.empty() && column + line.size() + 1 + word.size() > width) {
+			out += line + "\n" + std::string(indent, ' ');
+			line.clear();
+			column = indent;
+		}
+		line += (line.empty() ? "" : " ") + word;
+	}
+	return out + line;
+}
+
 std::string usage(const std::string& program) {
+	constexpr size_t HEAD_WIDTH = 22; // "  --option VALUE" and spaces up to the help
 	std::string text = "usage: " + program + " SCENE.json [options]\n\n"
 	                   "Renders a scene (format: scenes/README.md) and writes a PNG image. The options\n"
 	                   "override the scene's settings for this run only. Values follow the option,\n"
 	                   "as in --spp 64 or --spp=64.\n\noptions:\n";
 	for (const Option& option : option_table()) {
 		std::string head = std::string(option.name) + (option.value ? std::string(" ") + option.value : "");
-		head.resize(std::max<size_t>(head.size() + 2, 22), ' ');
-		text += "  " + head + option.help + "\n";
+		if (head.size() + 2 > HEAD_WIDTH) {
+			text += "  " + head + "\n" + std::string(HEAD_WIDTH + 2, ' ');
+		} else {
+			head.resize(HEAD_WIDTH, ' ');
+			text += "  " + head;
+		}
+		text += wrapped(option.help, HEAD_WIDTH + 2, HEAD_WIDTH + 2, HELP_WIDTH) + "\n";
 	}
 	text += "\nviews (--view):\n"
 	        "  path       the Monte Carlo path tracer (tasks 4 to 7)\n"
 	        "  eye        light from the eye: albedo * |cos| at the first hit, plus emission\n"
 	        "  normals    the first hit's normal n as colour (n + 1) / 2\n"
-	        "  bvh        BVH nodes visited per camera ray as a heat map (black: none, white: 64+)\n"
+	        "  bvh        BVH nodes whose boxes the camera ray overlaps before its hit\n"
+	        "             (what a front-to-back traversal visits), as a heat map: black 0,\n"
+	        "             blue, purple, orange, yellow, white 64 or more\n"
 	        "  direction  the camera ray's direction d as colour (d + 1) / 2\n"
 	        "The debug views need tasks 1 to 3 only.\n\n"
-	        "Exit status 0 on success, 1 on any error; bad input writes no file.\n";
+	        "Exit status 0 on success, 2 for a usage error (an unknown option, a bad value,\n"
+	        "no scene), 1 for any other error; bad input writes no file.\n";
 	return text;
 }
 
@@ -317,9 +367,18 @@ void override_scene(Scene& scene, const Cli_Options& options) {
 }
 
 bool wants_help(const std::vector<std::string>& args) {
-	return std::find(args.begin() + std::min<size_t>(1, args.size()), args.end(), "--help") != args.end();
+	auto first = args.begin() + std::min<size_t>(1, args.size());
+	return std::find(first, args.end(), "--help") != args.end() || std::find(first, args.end(), "-h") != args.end();
+}
+
+bool wants_version(const std::vector<std::string>& args) {
+	return std::find(args.begin() + std::min<size_t>(1, args.size()), args.end(), "--version") != args.end();
 }
 
 std::string cli_usage(const std::vector<std::string>& args) {
 	return usage(program_name(args));
+}
+
+std::string cli_version(const std::vector<std::string>& args) {
+	return program_name(args) + " (PathTracer Lab) " + LAB_VERSION + "\n";
 }

@@ -21,8 +21,8 @@ struct Cli_Options {
 	View view = View::path;
 	float exposure = 0.0f; // stops, for the PNG
 	bool quiet = false;
-	// Strategy switches (bench/README.md): --no-light-sampling, --no-roulette, --env-sampling,
-	// --sampler, --integrator, --light-choice.
+	// Strategy switches, each the same image with other noise: --no-light-sampling, --no-roulette,
+	// --env-sampling, --sampler, --integrator, --light-choice.
 	bool light_sampling = true, russian_roulette = true;
 	std::optional<bool> env_importance_sampling; // unset: as the scene says
 	Sampler sampler = Sampler::sobol;             // renders default to low-discrepancy samples
@@ -50,6 +50,10 @@ void override_environment(Scene& scene, const Cli_Options& options);
 // the picture is never stretched).
 void override_scene(Scene& scene, const Cli_Options& options);
 
-// --help: whether it was asked for, and the text.
+// --help (or -h): whether it was asked for, and the text, within 80 columns.
 bool wants_help(const std::vector<std::string>& args);
 std::string cli_usage(const std::vector<std::string>& args);
+
+// --version: whether it was asked for, and the line "<program> (PathTracer Lab) <version>".
+bool wants_version(const std::vector<std::string>& args);
+std::string cli_version(const std::vector<std::string>& args);

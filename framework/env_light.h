@@ -4,7 +4,7 @@
 // Equirectangular (latitude-longitude) convention, used by every function here:
 //   theta = acos(dir.y) in [0, pi]       (0 = straight up, +y)
 //   phi   = atan2(dir.z, dir.x) in [0, 2 pi)
-//   uv    = (phi / (2 pi), theta / pi)   in [0, 1)^2
+//   uv    = (phi / (2 pi), theta / pi)   u in [0, 1), v in [0, 1] (v = 1 straight down, -y)
 //   dir   = (sin theta cos phi, cos theta, sin theta sin phi)
 // Image texel (i, j) (column i, row j from the top) covers uv in [i/w, (i+1)/w) x [j/h, (j+1)/h);
 // its value is the radiance at the texel centre. Lookups interpolate bilinearly between texel

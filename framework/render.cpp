@@ -37,8 +37,8 @@ void render_tile(const Pathtracer& pt, const Render_Settings& settings, const Re
 }
 
 // options.tile_size, or smaller for a small film: at least TILES_PER_THREAD tiles for each thread,
-// so that the threads finish within a small tile of each other (bench/README.md, "Render
-// throughput"). The image does not depend on it.
+// so that the threads finish within a small tile of each other, and none is left working alone
+// at the end. The image does not depend on it.
 uint32_t tile_size(const Render_Settings& settings, const Render_Options& options, uint32_t threads) {
 	constexpr uint64_t TILES_PER_THREAD = 16;
 	constexpr uint32_t SMALLEST = 4;
@@ -61,6 +61,7 @@ Film render(const Pathtracer& pathtracer, const Render_Options& options) {
 	if (options.shuffle_tiles) std::shuffle(tiles.begin(), tiles.end(), std::mt19937(12345));
 	threads = std::min<uint32_t>(threads, uint32_t(tiles.size()));
 	std::atomic<size_t> next{0}, done{0};
+	if (options.progress) options.progress(0, tiles.size()); // the bar appears at once
 	auto worker = [&]() {
 		for (size_t i; (i = next.fetch_add(1)) < tiles.size();) {
 			render_tile(pathtracer, settings, options, tiles[i], film);

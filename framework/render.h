@@ -11,7 +11,8 @@ struct Render_Options {
 	uint32_t threads = 0;   // 0 = all hardware threads
 	uint32_t tile_size = 16; // edge in pixels; smaller on small films, so every thread has many tiles
 	bool shuffle_tiles = false; // render tiles in a random order (tests determinism)
-	// Called from worker threads with (finished tiles, total tiles); may be empty.
+	// Called with (0, total tiles) before the first tile, then from worker threads with (finished
+	// tiles, total tiles); may be empty.
 	std::function<void(size_t, size_t)> progress;
 	// A share of the samples, for a render split over machines (--pass, film_file.h): pass P of N
 	// draws the samples with index s % N == P - 1 of the settings' samples. The N passes draw every

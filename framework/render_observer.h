@@ -1,6 +1,6 @@
 #pragma once
 // The render observer: what a render does, told as it happens to one observer per thread (the ray
-// recorder of --follow-pixel, lifecycle.h; bench/'s time profile; tests' counters). Each site in the
+// recorder of --follow-pixel, lifecycle.h; the benchmarks' time profile; tests' counters). Each site in the
 // framework makes one call: observe<Event>(work, inputs...) around work that observers time or nest
 // in (begin(event) before it, end(event, result) after), report<Event>(result, inputs...) after
 // work they only need the result of (end(event, result)); the event is made of the site's inputs,

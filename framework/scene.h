@@ -33,10 +33,10 @@ struct Render_Settings {
 	uint32_t samples = 16;   // samples per pixel
 	uint32_t max_depth = 8;  // maximum number of bounces (see pathtracer.h)
 	uint64_t seed = 0;
-	// Strategy switches, for comparing estimators (bench/README.md); both estimate the same image.
+	// Strategy switches, for comparing estimators; both estimate the same image.
 	bool light_sampling = true;   // false: has_lights() is false, so task 6 samples the BSDF only
 	bool russian_roulette = true; // false: task 4 never cuts a path before max_depth
-	// Estimators of the same image (bench/README.md). These defaults are what the graders' statistics
+	// Estimators of the same image. These defaults are what the graders' statistics
 	// assume (independent samples, the lab's estimator); the renderer's command line defaults to
 	// Sampler::sobol, and pathtracer_reference to Integrator::nee.
 	Sampler sampler = Sampler::independent;

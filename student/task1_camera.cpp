@@ -2,6 +2,11 @@
 #include "camera.h"
 #include "pathtracer.h"
 
+namespace {
+// Your helper functions go here. The anonymous namespace keeps them private to this file: two task
+// files that each define a helper of the same name (say `lerp`) would otherwise not link together.
+} // namespace
+
 Ray Camera::generate_ray(Vec2 film_uv) const {
 	// TODO (Task 1, handout §1.2): the ray from the camera through film point film_uv.
 	// - film_uv (0, 0) is the top-left corner of the image, (1, 1) the bottom-right (camera.h).

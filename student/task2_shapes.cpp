@@ -2,6 +2,11 @@
 #include "shapes.h"
 #include "tri_mesh.h"
 
+namespace {
+// Your helper functions go here. The anonymous namespace keeps them private to this file: two task
+// files that each define a helper of the same name (say `lerp`) would otherwise not link together.
+} // namespace
+
 Trace Triangle::hit(const Ray& ray) const {
 	// TODO (Task 2, handout §2.1): Möller–Trumbore ray-triangle intersection.
 	// - Solve o + t d = (1 - u - v) p0 + u p1 + v p2 for (u, v, t) with Cramer's rule.

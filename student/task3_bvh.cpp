@@ -3,6 +3,11 @@
 #include "instance.h"
 #include "tri_mesh.h"
 
+namespace {
+// Your helper functions go here. The anonymous namespace keeps them private to this file: two task
+// files that each define a helper of the same name (say `lerp`) would otherwise not link together.
+} // namespace
+
 bool BBox::hit(const Ray& ray, Vec2& times) const {
 	// TODO (Task 3, handout §3.1): ray-box slab test.
 	// - For each axis, the ray is between the two planes for t in [(min - o) / d, (max - o) / d]

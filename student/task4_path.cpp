@@ -3,6 +3,11 @@
 #include "material.h"
 #include "pathtracer.h"
 
+namespace {
+// Your helper functions go here. The anonymous namespace keeps them private to this file: two task
+// files that each define a helper of the same name (say `lerp`) would otherwise not link together.
+} // namespace
+
 Scatter BSDF_Lambertian::scatter(RNG& rng, Vec3 out_dir) const {
 	// TODO (Task 4, handout §4.1): sample in_dir from the cosine-weighted hemisphere (density
 	// cos(theta) / pi) and return it with attenuation = evaluate(out_dir, in_dir).

@@ -1,6 +1,11 @@
 // Task 5: materials. Handout: handouts/task5_materials.md
 #include "material.h"
 
+namespace {
+// Your helper functions go here. The anonymous namespace keeps them private to this file: two task
+// files that each define a helper of the same name (say `lerp`) would otherwise not link together.
+} // namespace
+
 Vec3 reflect(Vec3 dir) {
 	// TODO (Task 5, handout §5.1): mirror `dir` about the local normal (0, 1, 0): the normal part
 	// stays, the tangential part changes sign.

@@ -2,6 +2,11 @@
 #include "frame.h"
 #include "pathtracer.h"
 
+namespace {
+// Your helper functions go here. The anonymous namespace keeps them private to this file: two task
+// files that each define a helper of the same name (say `lerp`) would otherwise not link together.
+} // namespace
+
 Incoming_Sample Pathtracer::sample_incoming(RNG& rng, const Trace& hit, const BSDF& bsdf, Vec3 out_dir) const {
 	// TODO (Task 6): the one-sample mixture of BSDF sampling and light sampling.
 	// 1. Discrete BSDFs (bsdf.is_discrete()) and scenes without lights (!has_lights()): keep the

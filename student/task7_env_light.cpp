@@ -1,6 +1,11 @@
 // Task 7: environment light. Handout: handouts/task7_env_light.md
 #include "env_light.h"
 
+namespace {
+// Your helper functions go here. The anonymous namespace keeps them private to this file: two task
+// files that each define a helper of the same name (say `lerp`) would otherwise not link together.
+} // namespace
+
 Vec2 direction_to_uv(Vec3 dir) {
 	// TODO (Task 7, handout §7.1): direction -> (theta, phi) -> uv, with the convention in
 	// env_light.h.

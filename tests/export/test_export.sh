@@ -4,11 +4,16 @@
 # the reference or of those framework sources, renamed or not), and its task-1 grader must build from
 # the prebuilt reference with the release's presets and fail on the shipped stub.
 #
-# usage: test_export.sh REPOSITORY_ROOT SOLUTION_SCAN
+# Everything the release's text (README, handouts, ./lab help, code comments) names, the release has:
+# paths, handout sections, ./lab commands and functions (tests/export/release_references.cpp), and
+# that check fails on a copy with a wrong reference of each kind planted.
+#
+# usage: test_export.sh REPOSITORY_ROOT SOLUTION_SCAN RELEASE_REFERENCES
 set -euo pipefail
 
 root=$1
 scan=$2
+references=$3
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "export test: $*" >&2; exit 1; }
@@ -64,6 +69,38 @@ sed -n '/^Trace Triangle::hit/,/^}/p' "$root/reference/task2_shapes.cpp" |
 	fail "solution_scan did not find a renamed copy of Triangle::hit"
 grep -q "of the solution function" "$tmp/planted.log" || fail "solution_scan failed without naming the copy"
 echo "export test: solution_scan finds a renamed copy of Triangle::hit"
+
+# What the release's text names, it has (tests/export/release_references.cpp).
+"$references" "$release" >"$tmp/references.log" ||
+	{ cat "$tmp/references.log" >&2; fail "the release's text names things the release does not have"; }
+tail -1 "$tmp/references.log"
+# The check must be able to fail: a copy of the release (hard links, and a new file for each one
+# changed) with one wrong reference of each kind planted in a handout and in a framework comment.
+planted=$tmp/planted_release
+cp -al "$release" "$planted"
+plant() { # FILE TEXT: a new copy of FILE with TEXT appended
+	cat "$planted/$1" >"$planted/$1.new"
+	echo "$2" >>"$planted/$1.new"
+	mv "$planted/$1.new" "$planted/$1"
+}
+plant handouts/task1_camera.md 'See `framework/no_such_file.h`, §1.9, `./lab no-such-command` and `no_such_function(p)`.'
+plant framework/camera.h '// planted: the details are in bench/README.md'
+"$references" "$planted" >"$tmp/planted_references.log" &&
+	fail "release_references passed a release with planted wrong references"
+for expected in "handouts/task1_camera.md:.*framework/no_such_file.h" "handouts/task1_camera.md:.*§1.9" \
+	"handouts/task1_camera.md:.*./lab no-such-command" "handouts/task1_camera.md:.*no_such_function()" \
+	"framework/camera.h:.*bench/README.md"; do
+	grep -q "$expected" "$tmp/planted_references.log" ||
+		{ cat "$tmp/planted_references.log" >&2; fail "release_references did not report the planted reference '$expected'"; }
+done
+echo "export test: release_references reports a planted missing file, section, command, function and commented path"
+# Every handout tells what to do when the student's code crashes or hangs (the README's section).
+for handout in "$release"/handouts/task[1-7]_*.md; do
+	n=$(basename "$handout" | sed 's/^task\([1-7]\)_.*/\1/')
+	grep -qF "./lab grade $n --debug" "$handout" && grep -qF "README.md#when-it-crashes-or-hangs" "$handout" ||
+		fail "$(basename "$handout") does not point to ./lab grade $n --debug and the README's \"When it crashes or hangs\""
+done
+echo "export test: every handout points to ./lab grade N --debug and the README's \"When it crashes or hangs\""
 
 # The student's view: configure, build the task-1 grader (and the grade report's tool), run ctest -L task1.
 cmake -S "$release" --preset release -B "$release/build" >"$tmp/configure.log" 2>&1 ||

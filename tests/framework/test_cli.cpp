@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -126,6 +127,41 @@ TEST_CASE("cli: --help explains every option and every view, and succeeds") {
 	CHECK(here.new_files().empty());
 	// --help wins over everything else on the line.
 	CHECK(run({"sphere.json", "--spp", "0", "--help"}).status == 0);
+}
+
+TEST_CASE("cli: -h is --help, and every line of the help fits 80 columns") {
+	In_Temp_Dir here;
+	Run help = run({"--help"});
+	Run h = run({"-h"});
+	CHECK(h.status == 0);
+	CHECK(h.out == help.out);
+	std::istringstream lines(help.out);
+	int number = 1;
+	for (std::string line; std::getline(lines, line); number++) {
+		INFO("line " << number << " of --help is " << line.size() << " characters long:\n" << line);
+		CHECK(line.size() <= 80);
+	}
+}
+
+TEST_CASE("cli: --version prints the program and the lab's version, and succeeds") {
+	In_Temp_Dir here;
+	Run result = run({"--version"});
+	CHECK(result.status == 0);
+	CHECK(result.err.empty());
+	CHECK(result.out.rfind("pathtracer_reference (PathTracer Lab) ", 0) == 0);
+	CHECK(result.out.find("unknown") == std::string::npos); // CMake gave the project's VERSION
+	CHECK(here.new_files().empty());
+}
+
+TEST_CASE("cli: a bad command line exits with status 2 (as ./lab's usage errors), a bad scene with 1") {
+	In_Temp_Dir here;
+	for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+	         {}, {"sphere.json", "--bogus"}, {"sphere.json", "--spp", "0"}, {"sphere.json", "other.json"}}) {
+		INFO("pathtracer_reference " << joined(args));
+		CHECK(run(args).status == 2);
+	}
+	CHECK(run({"missing.json"}).status == 1);
+	CHECK(run({"broken.json"}).status == 1);
 }
 
 TEST_CASE("cli: bad input gives one 'error:' line naming the problem, a non-zero status and no file") {
@@ -387,6 +423,21 @@ TEST_CASE("cli: --quiet prints nothing, and the progress bar appears only on a t
 	CHECK(terminal.err.find("100%") != std::string::npos);
 }
 
+TEST_CASE("cli: scene loading is shown, reported with its time, and counted in the total") {
+	In_Temp_Dir here;
+	Run terminal = run({"sphere.json"}, true);
+	CHECK(terminal.status == 0);
+	INFO("stdout:\n" << terminal.out << "stderr:\n" << terminal.err);
+	CHECK(terminal.err.rfind("loading sphere.json ...", 0) == 0); // shown while it loads
+	CHECK(terminal.err.find("  0%") != std::string::npos);        // then the bar, at once
+	CHECK(terminal.out.rfind("loaded sphere.json in ", 0) == 0);
+	CHECK(terminal.out.find("total: ") != std::string::npos);
+	CHECK(terminal.out.find("(loading ") != std::string::npos);
+	Run quiet = run({"sphere.json", "--quiet"}, true);
+	CHECK(quiet.out.empty());
+	CHECK(quiet.err.empty());
+}
+
 TEST_CASE("cli: non-finite samples are counted, reported with a warning, and marked in the NaN map") {
 	In_Temp_Dir here;
 	// Emission and sky near the float maximum: emitted plus reflected radiance overflows to +inf.
@@ -478,4 +529,50 @@ TEST_CASE("Progress_Bar: percentage and ETA on one line when enabled, nothing wh
 	bar.finish();
 	CHECK(out.str().back() == '\r'); // the line is erased for the next output
 	CHECK(out.str().find('\n') == std::string::npos);
+}
+
+TEST_CASE("Progress_Bar: appears at once, before any work is done") {
+	std::ostringstream out;
+	Progress_Bar bar(out, true);
+	bar.update(0, 1000);
+	CHECK(out.str().find("  0%") != std::string::npos);
+	CHECK(out.str().find("ETA -:--") != std::string::npos);
+}
+
+// The lines a bar drew, each one after a '\r'.
+std::vector<std::string> drawn_lines(const std::string& text) {
+	std::vector<std::string> lines;
+	std::istringstream in(text);
+	for (std::string line; std::getline(in, line, '\r');) {
+		if (line.find_first_not_of(' ') != std::string::npos) lines.push_back(line);
+	}
+	return lines;
+}
+
+TEST_CASE("Progress_Bar: every line is narrower than the terminal, down to 10 columns") {
+	for (size_t columns : {80, 40, 30, 24, 10}) {
+		std::ostringstream out;
+		{
+			Progress_Bar bar(out, true, columns);
+			for (size_t done = 0; done <= 100; done += 7) bar.update(done, 100);
+		}
+		std::vector<std::string> lines = drawn_lines(out.str());
+		REQUIRE_FALSE(lines.empty());
+		for (const std::string& line : lines) {
+			INFO(columns << " columns: '" << line << "'");
+			CHECK(line.size() < std::max<size_t>(columns, 16)); // below 16 only the percentage and ETA remain
+		}
+		if (columns >= 40) CHECK(lines.back().find('[') != std::string::npos); // the bar itself
+	}
+}
+
+TEST_CASE("terminal_columns: the terminal's width, else $COLUMNS, else 80") {
+	if (stderr_is_terminal()) return; // the real terminal's width wins; ctest runs without one
+	const char* saved = std::getenv("COLUMNS");
+	std::string previous = saved ? saved : "";
+	setenv("COLUMNS", "57", 1);
+	CHECK(terminal_columns() == 57);
+	unsetenv("COLUMNS");
+	CHECK(terminal_columns() == 80);
+	if (saved) setenv("COLUMNS", previous.c_str(), 1);
 }

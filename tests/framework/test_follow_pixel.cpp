@@ -63,6 +63,7 @@ TEST_CASE("follow_pixel shows each ray's hit, the BSDF sample and the weights", 
 	// Under a uniform environment of radiance 1 the light returned by the bounce is 1, so the
 	// weight the estimator applied is exactly the sample's value, and the throughput shows it.
 	CHECK(text.find("weight applied to the next ray's light") != std::string::npos);
+	CHECK(text.find("(? in a weight or throughput: no light came back") != std::string::npos); // what '?' means
 }
 
 TEST_CASE("Nothing is recorded unless a pixel is followed", "[lifecycle]") {

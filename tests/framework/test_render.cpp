@@ -118,7 +118,7 @@ TEST_CASE("render: the same seed gives the same image, another seed another imag
 	CHECK(unchanged == 0);
 }
 
-TEST_CASE("render draws settings.samples samples of every pixel and reports progress up to all tiles") {
+TEST_CASE("render draws settings.samples samples of every pixel and reports progress from 0 up to all tiles") {
 	Scene scene = sphere_scene();
 	Render_Options options = threads_and_tiles(2, 5);
 	std::mutex mutex;
@@ -135,9 +135,9 @@ TEST_CASE("render draws settings.samples samples of every pixel and reports prog
 	const size_t tiles = ((24 + 4) / 5) * ((18 + 4) / 5); // ceil(24 / 5) * ceil(18 / 5)
 	CHECK(total == tiles);
 	std::sort(reports.begin(), reports.end());
-	std::vector<size_t> expected(tiles);
-	for (size_t i = 0; i < tiles; i++) expected[i] = i + 1;
-	CHECK(reports == expected); // each tile reported once, with counts 1 .. tiles
+	std::vector<size_t> expected(tiles + 1);
+	for (size_t i = 0; i <= tiles; i++) expected[i] = i;
+	CHECK(reports == expected); // 0 before the first tile (the bar appears at once), then each tile once
 }
 
 TEST_CASE("Pixel_Stats: mean and unbiased variance equal the two-pass formulas") {

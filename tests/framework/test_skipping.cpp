@@ -1,8 +1,7 @@
-// What a scene does not need, the renderer does not do (bench/README.md, "Skip what a scene doesn't
-// need"): no hierarchy over a handful of objects, no light sampling where it cannot help, no
-// sampling table for an environment that is not importance-sampled, and an any-hit query that
-// stops at the first hit. Each is shown by a counter, with a case where the work is done so that
-// the counter is seen to count.
+// What a scene does not need, the renderer does not do: no hierarchy over a handful of objects,
+// no light sampling where it cannot help, no sampling table for an environment that is not
+// importance-sampled, and an any-hit query that stops at the first hit. Each is shown by a
+// counter, with a case where the work is done so that the counter is seen to count.
 #include "call_counter.h"
 #include "furnace_scenes.h"
 #include "light_scenes.h"

@@ -1,5 +1,5 @@
 #pragma once
-// The rubric (grading/rubric.json): how many points each task is worth and how they are split over
+// The rubric (rubric.json, kept by the instructors): how many points each task is worth and how they are split over
 // its test cases. Format:
 //
 //   {"tasks": [{"task": 1, "points": 5,

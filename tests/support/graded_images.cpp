@@ -41,7 +41,7 @@ Scene load_graded(const Graded_Scene& graded) {
 
 namespace {
 
-// The files whose checksums ./lab references records: every graded scene and its references.
+// The files whose checksums make_references records: every graded scene and its references.
 std::vector<std::string> checked_files() {
 	std::vector<std::string> files;
 	for (const Graded_Scene& scene : graded_scenes()) {

@@ -3,7 +3,7 @@
 // <scene>_mean.exr, <scene>_var.exr (per-sample variance) and <scene>.json, the settings that made
 // them. A scene's own "film" block holds the graders' settings (size, samples, max_depth, seed);
 // the references use the same size and depth, REFERENCE_SPP_FACTOR times the samples and their
-// own seed. `./lab references` (tests/images/make_references.cpp) regenerates them.
+// own seed. The instructors regenerate them (make_references, in their repository).
 #include "film.h"
 #include "image_compare.h"
 #include "pathtracer.h"
@@ -27,7 +27,7 @@ constexpr uint64_t REFERENCE_SEED = 1000003; // different from every grader and 
 std::string graded_scene_file(const std::string& name);
 std::string reference_file(const std::string& name, const std::string& suffix); // "_mean.exr", ".json"
 
-// Checksums: `./lab references` records the SHA-256 of every graded scene and reference file in
+// Checksums: make_references records the SHA-256 of every graded scene and reference file in
 // scenes/graded/references/SHA256SUMS; reading one that differs (or has none) is an Input_Error,
 // never a pass.
 inline const std::string GRADED_CHECKSUMS = "scenes/graded/references/SHA256SUMS";

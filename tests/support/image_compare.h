@@ -22,7 +22,7 @@
 // - The image passes when at least 99.75% of its tests pass (30 of 12 288 for 64 x 64 may fail):
 //   heavy-tailed light transport (a small, bright light; a caustic) can push a few pixels of a
 //   correct render past even that threshold, while a modelling error moves whole regions.
-//   Measured on the graded scenes (tests/images/test_calibration.cpp): 100 correct renders (5
+//   Measured on the graded scenes (the instructors' calibration test): 100 correct renders (5
 //   scenes x 20 seeds) had 0 failing pixel channels; deliberate bugs (cosine term missing, pdf not
 //   divided, light pdf doubled, glass never reflecting, environment pdf without sin(theta)) made
 //   88 to 6 328 fail.

@@ -1,5 +1,5 @@
 #pragma once
-// Closed forms for direct lighting (testing-anchors §4), in double precision and independent of the
+// Closed forms for direct lighting, in double precision and independent of the
 // framework's light code: the oracles of tests/framework/test_area_lights.cpp and the task 6 grader.
 #include <glm/glm.hpp>
 

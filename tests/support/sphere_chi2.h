@@ -1,6 +1,6 @@
 #pragma once
 // Pearson's chi-square test of a sampler of directions against its density over the unit sphere
-// (the method of pbrt-v4's BSDF tests and Mitsuba 3's ChiSquareTest, testing-anchors §1.2, §2.1).
+// (the method of pbrt-v4's BSDF tests and Mitsuba 3's ChiSquareTest).
 //
 // Cells are a grid in the spherical coordinates of env_light.h:
 //   theta = angle from +y in [0, pi], phi = atan2(z, x) in [0, 2 pi).

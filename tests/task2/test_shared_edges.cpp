@@ -1,7 +1,7 @@
 // Task 2, handout §2.3: no light leaks between triangles. A ray through the edge shared by two
 // triangles of a mesh must hit at least one of them; with exact arithmetic it hits both, but
 // rounding can make BOTH barycentric tests fail: with strict u >= 0, v >= 0, u + v <= 1 tests in
-// float, 3-4 % of the rays below leak (8-17 % in the set-up of testing-anchors §3.2). A tiny slack
+// float, 3-4 % of the rays below leak. A tiny slack
 // on those tests closes the gap.
 //
 // The student's Triangle::hit answers in the subject, all the rays of a test case in one request.

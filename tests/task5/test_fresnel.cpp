@@ -2,10 +2,10 @@
 // fresnel(cos_theta, index_of_refraction), cos_theta > 0 outside (vacuum), < 0 inside. The student's
 // fresnel runs in the subject (tests/judge/protocol.h).
 //
-// Expected values of the public cases: docs testing-anchors §4 (computed there independently in
-// double precision from r_s, r_p and F = (r_s^2 + r_p^2) / 2, and matching Mitsuba 3's test_fresnel
-// values of §2.3). With a grading seed the angles (and, where the test's name does not fix it, the
-// index) are drawn from it and the expected values are the reference's fresnel.
+// Expected values of the public cases: computed independently in double precision from r_s, r_p
+// and F = (r_s^2 + r_p^2) / 2 (handout §5.3), matching the values of Mitsuba 3's test_fresnel.
+// With a grading seed the angles (and, where the test's name does not fix it, the index) are
+// drawn from it and the expected values are the reference's fresnel.
 // Tolerance 1e-5: the exact formula evaluated in float is within ~4e-7 of these values at every
 // angle tested (including 40 degrees inside, where F is steep); Schlick's approximation is not
 // accepted: it is off by 8e-3 at 45 degrees, 1.7e-2 at Brewster's angle and 2.2e-2 at 80 degrees.

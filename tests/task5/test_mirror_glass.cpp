@@ -88,7 +88,7 @@ TEST_CASE("Glass scatter: reflects with probability F and refracts with 1 - F (b
 	struct Angle {
 		double theta;
 		bool inside;
-		double F; // testing-anchors §4, exact Fresnel for index 1.5
+		double F; // exact Fresnel for index 1.5 (handout §5.3)
 	};
 	std::optional<RNG> secret = secret_inputs("glass frequencies");
 	const Colours c = colours(secret);

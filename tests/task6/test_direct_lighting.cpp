@@ -152,7 +152,7 @@ TEST_CASE("under a small light, the mixture has a lower variance than BSDF sampl
 
 TEST_CASE("a diffuse floor under a square light renders as rho E / pi (max_depth 1)", "[task6][uses:sample_incoming]") {
 	// Lambert's formula for a parallel square of half-side a at height h, under its centre:
-	// a/h = 0.5 -> E = 0.752275 L, a/h = 1 -> E = 1.740840 L (testing-anchors §4). With a grading
+	// a/h = 0.5 -> E = 0.752275 L, a/h = 1 -> E = 1.740840 L (light_closed_forms.h). With a grading
 	// seed, two squares of half-side 0.3 to 1.2 at height 0.7 to 1.5, of radiance 0.5 to 3.
 	REQUIRE(closed_form::centred_square_irradiance(0.5, 1.0, 1.0) == Approx(0.752275).epsilon(1e-6));
 	REQUIRE(closed_form::centred_square_irradiance(1.0, 1.0, 1.0) == Approx(1.740840).epsilon(1e-6));

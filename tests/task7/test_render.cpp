@@ -1,6 +1,6 @@
 // Task 7 grader, handout §7.5: a diffuse sphere under a constant sky. A convex object cannot see
 // itself, so after one bounce every path ends in the sky: the sphere's pixels are exactly albedo * L
-// (testing-anchors §4, furnace family), whatever the sampling, and the sky's pixels are L.
+// (a furnace: the closed form holds), whatever the sampling, and the sky's pixels are L.
 #include "env_test_support.h"
 #include "film_statistics.h"
 #include "furnace_scenes.h"
