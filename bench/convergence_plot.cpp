@@ -161,7 +161,11 @@ void write_convergence_svg(const std::string& path, const Plot& plot) {
 	size_t columns = std::max<size_t>(1, std::min(plot.columns, plot.panels.size()));
 	size_t rows = (plot.panels.size() + columns - 1) / columns;
 	double cell_h = PANEL_H + legend_height(plot.panels);
-	double width = PANEL_W * double(columns), height = TITLE_H + cell_h * double(rows);
+	// Wide enough for the titles too (a character of sans-serif is about 0.6 of its size wide); the
+	// panels are centred under them.
+	double grid_width = PANEL_W * double(columns), height = TITLE_H + cell_h * double(rows);
+	double width = std::max({grid_width, 0.6 * 16 * double(plot.title.size()) + 40,
+	                         0.6 * 12 * double(plot.subtitle.size()) + 40});
 	Plot grid = plot;
 	grid.columns = columns;
 	std::string svg;
@@ -173,7 +177,9 @@ void write_convergence_svg(const std::string& path, const Plot& plot) {
 	    width / 2, plot.title.c_str());
 	add(svg, "<text x=\"%.1f\" y=\"44\" text-anchor=\"middle\" font-size=\"12\" fill=\"#333\">%s</text>\n", width / 2,
 	    plot.subtitle.c_str());
+	add(svg, "<g transform=\"translate(%.1f,0)\">\n", (width - grid_width) / 2);
 	for (size_t i = 0; i < plot.panels.size(); i++) draw_panel(svg, grid, i, cell_h);
+	svg += "</g>\n";
 	svg += "</svg>\n";
 
 	std::filesystem::path parent = std::filesystem::path(path).parent_path();

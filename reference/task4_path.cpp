@@ -96,7 +96,7 @@ Spectrum Pathtracer::shade(RNG& rng, const Ray& ray, const Trace& hit) const {
 	// hit lifted to the side the path arrived on, which is where every direction a two-sided
 	// Lambertian surface reflects into starts (spawn_ray). Drawn at the hit point itself, a light
 	// sample and the ray traced for it would disagree near the light's edges: a ray could hit the
-	// light where its light pdf said it misses it, and weigh 2 * albedo * L_e (bench/README.md).
+	// light where its light pdf said it misses it, and weigh 2 * albedo * L_e (handout §4.2).
 	Trace from = hit;
 	from.position = lifted(hit, out_dir);
 	Incoming_Sample s = sample_incoming(rng, from, material.bsdf, out_dir);
@@ -109,7 +109,7 @@ Spectrum Pathtracer::shade(RNG& rng, const Ray& ray, const Trace& hit) const {
 	// component, largest weight component)):
 	// - a weight of 1 or more is never cut. With task 6's mixture a BSDF-sampled direction weighs
 	//   2 * albedo (its pdf is half the BSDF's); cut with q = albedo, its second moment grew by a
-	//   factor 2 * albedo > 1 per bounce, and rare long paths became fireflies (bench/README.md);
+	//   factor 2 * albedo > 1 per bounce, and rare long paths became fireflies (handout §4.3);
 	// - a small weight is cut no more often than the albedo says: a direction aimed at a light has a
 	//   small weight because its pdf is large, and q = weight would kill almost all of them and
 	//   multiply the few survivors by the inverse (fireflies, handout §4.3);

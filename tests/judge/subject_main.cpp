@@ -11,11 +11,15 @@
 #include "render.h"
 #include "render_observer.h"
 
+#include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <mutex>
 #include <string>
+#include <thread>
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -79,12 +83,36 @@ template<typename Primitive> Tree tree_of(const BVH<Primitive>& bvh) {
 	return tree;
 }
 
+// f(i) for i in [0, count), on every core (as a render calls BVH::hit: from several threads at
+// once); an exception thrown by any call is thrown again here, after all threads have ended.
+template<class F> void for_each_in_parallel(size_t count, F f) {
+	size_t threads = std::clamp<size_t>(std::thread::hardware_concurrency(), 1, 8);
+	std::atomic<size_t> next{0};
+	std::exception_ptr thrown;
+	std::mutex thrown_mutex;
+	auto work = [&] {
+		try {
+			for (size_t i; (i = next.fetch_add(1)) < count;) f(i);
+		} catch (...) {
+			std::lock_guard<std::mutex> lock(thrown_mutex);
+			if (!thrown) thrown = std::current_exception();
+			next = count; // the others stop too
+		}
+	};
+	std::vector<std::thread> pool;
+	for (size_t t = 1; t < threads; t++) pool.emplace_back(work);
+	work();
+	for (std::thread& thread : pool) thread.join();
+	if (thrown) std::rethrow_exception(thrown);
+}
+
 BVH_Triangles::Answer answer(const BVH_Triangles& request) {
 	BVH<Triangle> bvh(std::vector<Triangle>(request.triangles), request.max_leaf_size);
 	BVH_Triangles::Answer result;
 	result.tree = tree_of(bvh);
 	result.primitives = bvh.primitives;
-	for (const Ray& ray : request.rays) result.hits.push_back(bvh.hit(ray));
+	result.hits.resize(request.rays.size());
+	for_each_in_parallel(request.rays.size(), [&](size_t i) { result.hits[i] = bvh.hit(request.rays[i]); });
 	return result;
 }
 

@@ -65,16 +65,22 @@ void check_primitive_tests(const std::string& scene, const Scene& objects, const
 	std::vector<Instance> by_index(instances);
 	std::sort(by_index.begin(), by_index.end(), [](const Instance& a, const Instance& b) { return a.index < b.index; });
 
-	BVH_Instances::Answer answer = judge::ask(BVH_Instances{objects, 1, rays});
-	std::vector<BBox> your_boxes;
-	for (uint32_t index : answer.order) {
-		if (index >= by_index.size()) {
-			FAIL_CHECK("BVH::build returned an object that was not given to it (handout §3.2)");
-			return;
+	// The tree alone first: the count below means something only for a valid tree, and an invalid
+	// one (the starter's single leaf) would make the subject test every object for every ray.
+	auto valid_tree = [&](const BVH_Instances::Answer& answer) {
+		std::vector<BBox> your_boxes;
+		for (uint32_t index : answer.order) {
+			if (index >= by_index.size()) {
+				FAIL_CHECK("BVH::build returned an object that was not given to it (handout §3.2)");
+				return false;
+			}
+			your_boxes.push_back(by_index[index].bbox());
 		}
-		your_boxes.push_back(by_index[index].bbox());
-	}
-	if (!valid(answer.tree, your_boxes, 1)) return;
+		return valid(answer.tree, your_boxes, 1);
+	};
+	if (!valid_tree(judge::ask(BVH_Instances{objects, 1, {}}))) return;
+	BVH_Instances::Answer answer = judge::ask(BVH_Instances{objects, 1, rays});
+	if (!valid_tree(answer)) return; // (a build that differs from the first)
 
 	BVH<Instance> reference(std::vector<Instance>(by_index), 1);
 	protocol::Tree best_tree = task3::tree_of(reference);
