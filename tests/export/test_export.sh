@@ -112,7 +112,7 @@ status=0
 cat "$tmp/ctest.log" | tail -15
 [ "$status" -ne 0 ] || fail "ctest -L task1 passed on the shipped stub"
 grep -q "tests failed out of 1$" "$tmp/ctest.log" || fail "ctest -L task1 did not run exactly one test"
-grep -q "judge_task1" "$tmp/ctest.log" || fail "the output does not name judge_task1"
+grep -q "inputs: the public test cases" "$tmp/ctest.log" || fail "the output is not the task-1 judge's"
 grep -Eq "test cases: *[0-9]+ \| *([0-9]+ passed \| *)?[1-9][0-9]* failed" "$tmp/ctest.log" ||
 	fail "the grader did not run to its summary with failed test cases (a crash?)"
 echo "export test: the release builds, and its task-1 grader fails on the stub as it should"

@@ -107,8 +107,24 @@ const Sandbox& sandbox() {
 
 } // namespace judge
 
+// Catch2's console reporter without the banner it prints before the first failure ("judge_taskN is
+// a Catch v2 host application. Run with -? for options"), so that the first screen belongs to the
+// student's mistake. The judge's default reporter; -r chooses another.
+struct Lab_Reporter : Catch::ConsoleReporter {
+	using ConsoleReporter::ConsoleReporter;
+	static std::string getDescription() {
+		return "Catch2's console reporter without its banner (the judge's default)";
+	}
+	void testRunStarting(const Catch::TestRunInfo& info) override {
+		ConsoleReporter::testRunStarting(info);
+		currentTestRunInfo.used = true; // the banner counts as printed
+	}
+};
+CATCH_REGISTER_REPORTER("lab", Lab_Reporter)
+
 int main(int argc, char** argv) {
 	Catch::Session session;
+	session.configData().reporterName = "lab";
 	Judge_State& s = state();
 	std::string sandbox_mode = "auto", seed_text;
 	double time_limit = 0.0;
