@@ -11,7 +11,10 @@ using protocol::BVH_Triangles;
 namespace {
 
 // Builds a BVH over `triangles` for each leaf size and compares it with brute force, each leaf
-// size on every third ray.
+// size on every third ray. The four scenes below ask 85 000 rays in all: a traversal bug that
+// returns a wrong hit for one ray in 10 000 is caught with probability 1 - exp(-8.5) > 0.9997. The
+// starter's one-leaf BVH tests every triangle for every ray, so the largest meshes get fewer rays
+// (dragon: 5 000; clusters: 10 000), which keeps its verdict within 5 s (issue 20).
 void check_against_brute_force(const std::vector<Triangle>& triangles, const std::vector<Ray>& rays) {
 	Closest_Hits expected(triangles);
 	REQUIRE(expected.hitting(rays) > rays.size() / 4); // the grader's own rays must hit often enough to test anything
@@ -40,7 +43,7 @@ TEST_CASE("BVH::hit equals brute force on a random triangle soup", "[task3][bvh]
 TEST_CASE("BVH::hit equals brute force on clustered triangles with a few large ones", "[task3][bvh][closest_hit][fn:BVH::hit][uses:BBox::hit][uses:BVH::build]") {
 	RNG rng(scene_seed("clusters", 302));
 	std::vector<Triangle> triangles = clustered_soup(rng);
-	check_against_brute_force(triangles, random_rays(rng, bounds_of(triangles), triangles, 20000));
+	check_against_brute_force(triangles, random_rays(rng, bounds_of(triangles), triangles, 10000));
 }
 
 TEST_CASE("BVH::hit equals brute force on the bunny mesh", "[task3][bvh][closest_hit][fn:BVH::hit][uses:BBox::hit][uses:BVH::build]") {
@@ -52,5 +55,5 @@ TEST_CASE("BVH::hit equals brute force on the bunny mesh", "[task3][bvh][closest
 TEST_CASE("BVH::hit equals brute force on the dragon mesh", "[task3][bvh][closest_hit][fn:BVH::hit][uses:BBox::hit][uses:BVH::build]") {
 	RNG rng(scene_seed("dragon", 304));
 	std::vector<Triangle> triangles = load_placed_mesh("scenes/meshes/dragon_vrip_res4.obj", "dragon");
-	check_against_brute_force(triangles, random_rays(rng, bounds_of(triangles), triangles, 10000));
+	check_against_brute_force(triangles, random_rays(rng, bounds_of(triangles), triangles, 5000));
 }
