@@ -54,3 +54,12 @@ Scene ceiling_light_scene(float half_side, float height, Spectrum radiance) {
 	scene.commit();
 	return scene;
 }
+
+Scene lit_floor(float albedo, float half_side, float height, Spectrum radiance, Vec3 eye) {
+	Scene scene;
+	add_object(scene, parallelogram(Vec3{-3.0f, 0.0f, -3.0f}, Vec3{0.0f, 0.0f, 6.0f}, Vec3{6.0f, 0.0f, 0.0f}),
+	           add_material(scene, diffuse_material(Spectrum{albedo}), "floor"));
+	add_object(scene, ceiling_square(half_side, height), add_material(scene, emitter(radiance), "light"));
+	scene.camera = Camera::look_at(eye, Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f}, 0.05f, 1.0f);
+	return scene;
+}

@@ -30,3 +30,9 @@ void add_object(Scene& scene, std::variant<Sphere, Tri_Mesh> shape, uint32_t mat
 
 // A scene holding only ceiling_square(half_side, height) with emission `radiance`, committed.
 Scene ceiling_light_scene(float half_side, float height, Spectrum radiance = Spectrum{1.0f});
+
+// A large diffuse floor of albedo `albedo` (y = 0, facing up) under ceiling_square(half_side,
+// height) with emission `radiance`, seen from `eye` by a 1 x 1 pixel camera whose field of view
+// (0.05 degrees) is so narrow that it sees only the floor's centre: there the irradiance varies by
+// less than 1e-6 across the pixel. Not committed.
+Scene lit_floor(float albedo, float half_side, float height, Spectrum radiance, Vec3 eye);

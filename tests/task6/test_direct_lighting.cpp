@@ -64,18 +64,7 @@ Sample_Moments pixel_moments(const std::vector<Spectrum>& values) {
 	return moments(samples);
 }
 
-// A large grey floor (y = 0, facing up) under a square light, seen by a 1 x 1 pixel camera whose
-// field of view (0.05 degrees) is so narrow that it sees only the floor's centre: there the
-// irradiance varies by less than 1e-6 across the pixel.
-Scene lit_floor(float half_side, float height, Spectrum radiance, Vec3 eye) {
-	Scene scene;
-	add_object(scene, parallelogram(Vec3{-3.0f, 0.0f, -3.0f}, Vec3{0.0f, 0.0f, 6.0f}, Vec3{6.0f, 0.0f, 0.0f}),
-	           add_material(scene, diffuse_material(Spectrum{RHO}), "floor"));
-	add_object(scene, ceiling_square(half_side, height), add_material(scene, emitter(radiance), "light"));
-	scene.camera = Camera::look_at(eye, Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f}, 0.05f, 1.0f);
-	return scene;
-}
-
+// A 1 x 1 film that sees only the floor of lit_floor (light_scenes.h).
 Render_Settings one_pixel(uint64_t seed) {
 	Render_Settings settings;
 	settings.width = settings.height = 1;
@@ -169,7 +158,7 @@ TEST_CASE("a diffuse floor under a square light renders as rho E / pi (max_depth
 		}
 	}
 	for (Case c : cases) {
-		Scene scene = lit_floor(c.half_side, c.height, Spectrum{c.radiance}, Vec3{0.6f, 0.4f, 0.5f});
+		Scene scene = lit_floor(RHO, c.half_side, c.height, Spectrum{c.radiance}, Vec3{0.6f, 0.4f, 0.5f});
 		scene.commit();
 		double e = closed_form::centred_square_irradiance(c.half_side, c.height, c.radiance);
 		check_estimate(pixel_moments(render_samples(scene, one_pixel(c.seed), 50000)), RHO * e / M_PI,
@@ -183,7 +172,7 @@ TEST_CASE("a light hidden behind a blocker gives exactly 0", "[task6][uses:sampl
 	// A black square between the floor and the light covers the light as seen from the floor's
 	// centre; the camera looks at that centre from the side, under the blocker. No direction can
 	// bring light, so every sample is exactly 0, never NaN.
-	Scene scene = lit_floor(0.5f, 1.0f, Spectrum{1.0f}, Vec3{2.0f, 0.1f, 0.0f});
+	Scene scene = lit_floor(RHO, 0.5f, 1.0f, Spectrum{1.0f}, Vec3{2.0f, 0.1f, 0.0f});
 	add_object(scene, ceiling_square(0.6f, 0.5f), add_material(scene, diffuse_material(Spectrum{0.0f}), "blocker"));
 	scene.commit();
 	std::vector<Spectrum> values = render_samples(scene, one_pixel(sampling_seed("occlusion", 51)), 20000);

@@ -91,17 +91,7 @@ void check_closed_form(const Sample_Moments& m, double expected, const std::stri
 	CHECK(std::abs(z) <= task6_nee::z_critical());
 }
 
-// A large grey floor under a square light, seen through a 1 x 1 pixel camera that sees only the
-// floor's centre (task 6's grader's scene).
-Scene lit_floor(float half_side, float height, Spectrum radiance, Vec3 eye) {
-	Scene scene;
-	add_object(scene, parallelogram(Vec3{-3.0f, 0.0f, -3.0f}, Vec3{0.0f, 0.0f, 6.0f}, Vec3{6.0f, 0.0f, 0.0f}),
-	           add_material(scene, diffuse_material(Spectrum{RHO}), "floor"));
-	add_object(scene, ceiling_square(half_side, height), add_material(scene, emitter(radiance), "light"));
-	scene.camera = Camera::look_at(eye, Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f}, 0.05f, 1.0f);
-	return scene;
-}
-
+// A 1 x 1 film that sees only the floor of lit_floor (light_scenes.h).
 Render_Settings one_pixel(uint64_t seed) {
 	Render_Settings settings = nee_settings(seed);
 	settings.width = settings.height = 1;
@@ -196,7 +186,7 @@ TEST_CASE("the NEE integrator renders a floor under a square light as rho E / pi
 		uint64_t seed;
 	};
 	for (Case c : {Case{0.5f, 1.0f, 2.0f, 41}, Case{1.0f, 1.0f, 1.0f, 42}}) {
-		Scene scene = lit_floor(c.half_side, c.height, Spectrum{c.radiance}, Vec3{0.6f, 0.4f, 0.5f});
+		Scene scene = lit_floor(RHO, c.half_side, c.height, Spectrum{c.radiance}, Vec3{0.6f, 0.4f, 0.5f});
 		scene.commit();
 		Pathtracer pt(scene, one_pixel(c.seed));
 		double e = closed_form::centred_square_irradiance(c.half_side, c.height, c.radiance);
