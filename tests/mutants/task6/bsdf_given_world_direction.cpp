@@ -3,6 +3,8 @@
 #include "frame.h"
 #include "pathtracer.h"
 
+#include "extension.h" // task 6's optional extension, as shipped
+
 Incoming_Sample Pathtracer::sample_incoming(RNG& rng, const Trace& hit, const BSDF& bsdf, Vec3 out_dir) const {
 	// BSDFs work in the local frame (normal +y), lights in world space (handout §6.3).
 	Frame frame = Frame::from_normal(hit.normal);
@@ -32,31 +34,4 @@ Incoming_Sample Pathtracer::sample_incoming(RNG& rng, const Trace& hit, const BS
 	// A direction neither strategy can produce carries no weight (and must not become 0 / 0).
 	if (!(pdf > 0.0f)) return Incoming_Sample{in_world, Spectrum{0.0f}, 0.0f, false};
 	return Incoming_Sample{in_world, bsdf.evaluate(out_local, in_world), pdf, false};
-}
-
-// ---- Optional extension: next-event estimation with multiple importance sampling (handout §6.5) ---
-
-float power_heuristic(float pdf_f, float pdf_g) {
-	// f^2 / (f^2 + g^2), written as 1 / (1 + (g / f)^2) so that large densities cannot overflow.
-	if (!(pdf_f > 0.0f)) return 0.0f; // strategy f cannot draw the direction
-	float ratio = pdf_g / pdf_f;
-	return 1.0f / (1.0f + ratio * ratio);
-}
-
-Spectrum Pathtracer::estimate_direct(RNG& rng, const Trace& hit, const BSDF& bsdf, Vec3 out_dir) const {
-	Light_Sample light = sample_light(rng, hit.position);
-	if (!(light.pdf > 0.0f) || light.radiance == Spectrum{0.0f}) return Spectrum{0.0f};
-
-	Frame frame = Frame::from_normal(hit.normal);
-	Vec3 out_local = frame.to_local(out_dir), in_local = frame.to_local(light.direction);
-	Spectrum f = bsdf.evaluate(out_local, in_local);
-	if (f == Spectrum{0.0f}) return f; // e.g. a light behind the surface: no shadow ray needed
-
-	// The shadow ray: is anything between the point and the light (handout §6.5)?
-	Ray shadow(hit.position, light.direction, Vec2{0.0f, Light_Sample::SHADOW_RAY_END * light.distance});
-	if (scene.occluded(shadow)) return Spectrum{0.0f};
-
-	// Weighted against BSDF sampling, which could have drawn the same direction.
-	float weight = power_heuristic(light.pdf, bsdf.pdf(out_local, in_local));
-	return f * light.radiance * std::abs(in_local.y) * weight / light.pdf;
 }
