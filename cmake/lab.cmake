@@ -4,24 +4,26 @@ target_compile_features(lab_options INTERFACE cxx_std_17)
 set(LAB_WARNINGS -Wall -Wextra -Wpedantic -Wno-unused-parameter)
 target_compile_options(lab_options INTERFACE ${LAB_WARNINGS})
 
-# Programs linked without LTO (the graders' judges and subjects) link with lld where it is installed:
-# ld.bfd reads every fat LTO object's intermediate code through GCC's plugin even when it does not
-# optimize across them, about a second per subject, while lld takes their machine code at once.
+# lab_defaults(<target> [OPTIMIZED]): the lab's settings for a target.
+# OPTIMIZED: link-time optimization in Release, for the renderers and benchmarks and for the code
+# they link (the framework, the reference tasks); its objects are fat, since graders and tests link
+# the same objects without LTO. Everything else (judges, subjects, tests) compiles plain objects
+# and, where lld is installed, links with it: ld.bfd reads every fat object's intermediate code
+# through GCC's plugin even when it does not optimize across them, about a second per subject,
+# while lld takes their machine code at once.
 include(CheckLinkerFlag)
 check_linker_flag(CXX -fuse-ld=lld LAB_HAVE_LLD)
-function(lab_fast_link target)
-	set_property(TARGET ${target} PROPERTY INTERPROCEDURAL_OPTIMIZATION_RELEASE OFF)
-	if(LAB_HAVE_LLD)
-		target_link_options(${target} PRIVATE -fuse-ld=lld)
-	endif()
-endfunction()
-
 function(lab_defaults target)
+	cmake_parse_arguments(PARSE_ARGV 1 arg "OPTIMIZED" "" "")
 	target_link_libraries(${target} PRIVATE lab_options)
-	if(LAB_LTO)
+	if(arg_OPTIMIZED AND LAB_LTO)
 		set_property(TARGET ${target} PROPERTY INTERPROCEDURAL_OPTIMIZATION_RELEASE ON)
-		# Fat objects: the graders' programs link these without LTO and use their machine code.
 		target_compile_options(${target} PRIVATE $<$<CONFIG:Release>:-ffat-lto-objects>)
+		return()
+	endif()
+	get_target_property(type ${target} TYPE)
+	if(LAB_HAVE_LLD AND type STREQUAL "EXECUTABLE")
+		target_link_options(${target} PRIVATE -fuse-ld=lld)
 	endif()
 endfunction()
 
@@ -61,7 +63,7 @@ function(lab_library name)
 	if(LAB_REFERENCE_SOURCES)
 		add_library(${name} OBJECT ${ARGN})
 		target_link_libraries(${name} PUBLIC framework_headers)
-		lab_defaults(${name})
+		lab_defaults(${name} OPTIMIZED)
 		add_library(${name}_archive STATIC EXCLUDE_FROM_ALL $<TARGET_OBJECTS:${name}>)
 		set_target_properties(${name}_archive PROPERTIES
 			OUTPUT_NAME ${name} ARCHIVE_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/prebuilt)

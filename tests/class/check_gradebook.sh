@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Compares a gradebook with what the synthetic class must score (make_class.sh):
-#   check_gradebook.sh RUBRIC EXPECTED.csv GRADEBOOK.csv
+#   check_gradebook.sh RUBRIC EXPECTED.csv GRADEBOOK.csv MINIMUM
 # Every submission graded, each task's points full (the rubric's), zero, or less than full as
-# expected, and the total their sum. Prints the first difference and exits 1, or prints a summary.
+# expected, and the total their sum; the class has at least MINIMUM submissions. Prints the first
+# difference and exits 1, or prints a summary.
 set -euo pipefail
-rubric=$1 expected=$2 book=$3
+rubric=$1 expected=$2 book=$3 minimum=$4
 fail() { echo "gradebook check: $*" >&2; exit 1; }
 # The rubric's points per task, in task order.
 mapfile -t points < <(grep -o '"points": *[0-9.]*' "$rubric" | grep -o '[0-9.]*$')
@@ -30,6 +31,6 @@ while IFS=, read -r id e1 e2 e3 e4 e5 e6 e7; do
 	done
 	awk -v s="$sum" -v t="$total" 'BEGIN { exit !((s - t) < 0.015 && (t - s) < 0.015) }' || fail "$id: total $total, but the tasks add up to $sum"
 done <"$expected"
-[ "$rows" -ge 20 ] || fail "only $rows submissions expected: the synthetic class must have at least 20"
+[ "$rows" -ge "$minimum" ] || fail "only $rows submissions expected: this synthetic class must have at least $minimum"
 [ "$(($(wc -l <"$book") - 1))" -eq "$rows" ] || fail "$book has $(($(wc -l <"$book") - 1)) rows, expected $rows"
 echo "gradebook check: all $rows submissions scored as expected"

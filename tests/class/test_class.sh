@@ -1,17 +1,19 @@
 #!/usr/bin/env bash
-# The class on one machine (label class): the synthetic class (make_class.sh) graded by
-# ./lab grade-class with two workers must score as expected (check_gradebook.sh); a rerun resumes
-# (nothing is graded again, the gradebook is the same); a submission graded again with --regrade
-# gets the same scores and messages. Leaves the gradebook in OUT/gradebook.csv for the GNU parallel
-# and Slurm tests (ctest fixture "class_graded").
-#   test_class.sh REPOSITORY_ROOT KIT OUT
+# The class on one machine (label class): the synthetic class (make_class.sh, small or full) graded
+# by ./lab grade-class with two workers must score as expected (check_gradebook.sh); a rerun resumes
+# (nothing is graded again, the gradebook is the same); a submission graded again gets the same
+# scores and messages. Leaves the class and its gradebook (OUT/gradebook.csv) for the GNU parallel
+# and Slurm tests (ctest fixtures "class_graded", "class_full_graded").
+#   test_class.sh REPOSITORY_ROOT KIT OUT small|full
 set -euo pipefail
-root=$1 kit=$2 out=$3
+root=$1 kit=$2 out=$3 size=$4
 here=$(cd "$(dirname "$0")" && pwd)
 fail() { echo "class test: $*" >&2; exit 1; }
 rm -rf "$out"
 mkdir -p "$out"
-bash "$here/make_class.sh" "$root" "$out/class"
+bash "$here/make_class.sh" "$root" "$out/class" "$size"
+minimum=4
+[ "$size" = small ] || minimum=20
 export KIT=$kit
 
 start=$SECONDS
@@ -20,7 +22,7 @@ start=$SECONDS
 seconds=$((SECONDS - start))
 count=$(find "$out/class/submissions" -mindepth 1 -maxdepth 1 -type d | wc -l)
 echo "class test: $count submissions graded in $seconds s with 2 workers ($(awk -v s="$seconds" -v n="$count" 'BEGIN { printf "%.1f", 2 * s / n }') s of a worker each)"
-bash "$here/check_gradebook.sh" "$root/grading/rubric.json" "$out/class/expected.csv" "$out/graded/gradebook.csv"
+bash "$here/check_gradebook.sh" "$root/grading/rubric.json" "$out/class/expected.csv" "$out/graded/gradebook.csv" "$minimum"
 cp "$out/graded/gradebook.csv" "$out/gradebook.csv"
 
 # A rerun resumes: nothing to grade, the same gradebook.
@@ -31,7 +33,7 @@ cmp -s "$out/gradebook.csv" "$out/graded/gradebook.csv" || fail "the rerun chang
 	fail "the rerun graded finished submissions again"
 
 # The same submission and seed give the same scores and messages: regrade one and compare.
-id=mistake_task1_upside_down
+id=mistake_task4_no_offset # in both classes
 strip_time() { grep -v '"execution_time"' "$1"; }
 strip_time "$out/graded/submissions/$id/results.json" >"$out/first.json"
 "$root/tools/grade-submission" "$out/class/submissions/$id" --out "$out/graded/submissions/$id" >/dev/null 2>&1 ||

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# The Gradescope autograder bundle (label gradescope): ./lab autograder makes it, then a fresh
-# Debian 12 root made by debootstrap, laid out like Gradescope's (/autograder/source, submission,
-# results), runs its setup.sh and then run_autograder for example submissions, and each
-# results.json must hold the expected score (all reference: full marks; the stubs: 0; one realistic
-# mistake: fewer) with one entry per test case of the rubric.
+# The Gradescope autograder bundle at work (labels gradescope and acceptance): made and checked by
+# test_bundle.sh, then a fresh Debian 12 root made by debootstrap, laid out like Gradescope's
+# (/autograder/source, submission, results), runs its setup.sh and then run_autograder for example
+# submissions, and each results.json must hold the expected score (all reference: full marks; the
+# stubs: 0; one realistic mistake: fewer) with one entry per test case of the rubric.
 #   test_autograder.sh REPOSITORY_ROOT OUT
 set -euo pipefail
 root=$1 out=$2
@@ -12,24 +12,20 @@ for program in debootstrap zip unzip chroot; do
 	command -v "$program" >/dev/null || fail "$program is not installed (Debian packages debootstrap, zip, unzip)"
 done
 [ "$(id -u)" -eq 0 ] || fail "needs root (debootstrap and chroot)"
-rm -rf "$out"
-mkdir -p "$out"
 system=$out/debian
 unmount() {
 	for mount in "$system/dev/pts" "$system/dev" "$system/proc" "$system/sys"; do
-		mountpoint -q "$mount" && umount -l "$mount"
+		if mountpoint -q "$mount"; then umount -l "$mount"; fi
 	done
 	return 0
 }
+unmount # an earlier run stopped before its trap: never delete through its mounts
+rm -rf "$out"
+mkdir -p "$out"
 trap unmount EXIT
 
-start=$SECONDS
-"$root/tools/make-autograder" "$out/autograder.zip" --seed 4242 >/dev/null || fail "./lab autograder failed"
-unzip -Z1 "$out/autograder.zip" >"$out/bundle.txt"
-grep -qx "setup.sh" "$out/bundle.txt" || fail "the bundle has no setup.sh at its root"
-grep -qx "run_autograder" "$out/bundle.txt" || fail "the bundle has no run_autograder at its root"
-! grep -q "^reference/" "$out/bundle.txt" || fail "the bundle holds reference/ sources"
-echo "autograder test: bundle made ($(du -h "$out/autograder.zip" | cut -f1)) in $((SECONDS - start)) s"
+bash "$(dirname "$0")/test_bundle.sh" "$root" "$out/bundle" || fail "the bundle test failed"
+bundle=$out/bundle/autograder.zip
 
 start=$SECONDS
 debootstrap --variant=minbase bookworm "$system" http://deb.debian.org/debian >"$out/debootstrap.log" 2>&1 ||
@@ -40,7 +36,7 @@ mount -t sysfs sys "$system/sys"
 mount --bind /dev "$system/dev"
 mount --bind /dev/pts "$system/dev/pts"
 mkdir -p "$system/autograder/source" "$system/autograder/submission" "$system/autograder/results"
-unzip -q "$out/autograder.zip" -d "$system/autograder/source"
+unzip -q "$bundle" -d "$system/autograder/source"
 cp "$system/autograder/source/run_autograder" "$system/autograder/run_autograder" # as Gradescope does
 echo "autograder test: a Debian 12 root in $((SECONDS - start)) s"
 
