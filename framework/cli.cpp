@@ -2,6 +2,7 @@
 #include "cli_options.h"
 #include "error.h"
 #include "film_file.h"
+#include "film_stream.h"
 #include "follow_pixel.h"
 #include "image_io.h"
 #include "output_file.h"
@@ -126,6 +127,32 @@ void render_and_write(const Scene& scene, const Cli_Options& options, Run_Times 
 	if (film.non_finite() > 0) warn_non_finite(film, options, err);
 }
 
+// --stream (./lab view): the render in batches of samples, the film written after each batch
+// (film_stream.h). Batches grow or shrink towards STREAM_BATCH_SECONDS, so that the page updates
+// several times a second without the frames' cost showing in the render's speed. Samples are
+// added in index order (render_samples), so the film after N samples is render()'s with N.
+void stream(const Scene& scene, const Cli_Options& options, std::ostream& out) {
+	constexpr double STREAM_BATCH_SECONDS = 0.15;
+	Pathtracer pathtracer(scene, scene.settings, options.view);
+	const Render_Settings& settings = pathtracer.settings;
+	Render_Options render_options;
+	render_options.threads = options.threads;
+	Film film(settings.width, settings.height);
+	uint32_t done = 0, batch = 1;
+	double seconds = 0.0;
+	while (done < settings.samples && out) {
+		uint32_t end = done + std::min(batch, settings.samples - done);
+		auto start = std::chrono::steady_clock::now();
+		render_samples(pathtracer, film, done, end, render_options);
+		double batch_seconds = seconds_since(start);
+		seconds += batch_seconds;
+		done = end;
+		write_frame(out, frame_of(film, done, seconds));
+		if (batch_seconds < 0.5 * STREAM_BATCH_SECONDS && batch < (1u << 16)) batch *= 2;
+		if (batch_seconds > 2.0 * STREAM_BATCH_SECONDS && batch > 1) batch /= 2;
+	}
+}
+
 // --follow-pixel: the same paths the renderer takes for that pixel, printed ray by ray.
 void follow(const Scene& scene, const Cli_Options& options, std::ostream& out) {
 	Pathtracer pathtracer(scene, scene.settings, options.view);
@@ -135,7 +162,12 @@ void follow(const Scene& scene, const Cli_Options& options, std::ostream& out) {
 		                  ") is outside the " + std::to_string(pathtracer.settings.width) + " x " +
 		                  std::to_string(pathtracer.settings.height) + " image");
 	}
-	follow_pixel(pathtracer, x, y, std::min(options.follow_samples, pathtracer.settings.samples), out);
+	uint32_t samples = std::min(options.follow_samples, pathtracer.settings.samples);
+	if (options.follow_json) {
+		follow_pixel_json(pathtracer, x, y, samples, out);
+	} else {
+		follow_pixel(pathtracer, x, y, samples, out);
+	}
 }
 
 } // namespace
@@ -161,7 +193,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
 		}
 		if (!options.integrator) options.integrator = integrator;
 		// Loading is shown as it happens (a large mesh and its BVH take seconds) and then reported.
-		bool show_loading = !options.quiet && !options.follow_pixel;
+		bool show_loading = !options.quiet && !options.follow_pixel && !options.stream;
 		std::string loading = "loading " + options.scene + " ...";
 		if (show_loading && err_is_terminal) {
 			err << loading << std::flush;
@@ -176,6 +208,8 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
 		loading_line = false;
 		if (options.follow_pixel) {
 			follow(scene, options, out);
+		} else if (options.stream) {
+			stream(scene, options, out);
 		} else {
 			render_and_write(scene, options, times, out, err, err_is_terminal);
 		}

@@ -22,13 +22,21 @@ std::vector<Tile> make_tiles(uint32_t w, uint32_t h, uint32_t size) {
 	return tiles;
 }
 
+// The first sample index at or after `first` in the pass's share (s % passes == pass - 1).
+uint32_t first_of_pass(uint32_t first, const Render_Options& options) {
+	uint32_t offset = options.pass - 1;
+	if (first <= offset) return offset;
+	return first + (options.passes - (first - offset) % options.passes) % options.passes;
+}
+
+// Samples [first, end) of every pixel of the tile.
 void render_tile(const Pathtracer& pt, const Render_Settings& settings, const Render_Options& options, const Tile& tile,
-                 Film& film) {
+                 uint32_t first, uint32_t end, Film& film) {
 	for (uint32_t y = tile.y0; y < tile.y1; y++) {
 		for (uint32_t x = tile.x0; x < tile.x1; x++) {
 			size_t index = size_t(y) * film.w + x;
 			Pixel_Stats& pixel = film.pixels[index];
-			for (uint32_t s = options.pass - 1; s < settings.samples; s += options.passes) {
+			for (uint32_t s = first_of_pass(first, options); s < end; s += options.passes) {
 				RNG rng = RNG::for_sample(settings.seed, index, s, settings.sampler);
 				pixel.add(pt.trace_pixel(x, y, rng));
 			}
@@ -50,12 +58,23 @@ uint32_t tile_size(const Render_Settings& settings, const Render_Options& option
 } // namespace
 
 Film render(const Pathtracer& pathtracer, const Render_Options& options) {
+	Film film(pathtracer.settings.width, pathtracer.settings.height);
+	render_samples(pathtracer, film, 0, pathtracer.settings.samples, options);
+	return film;
+}
+
+void render_samples(const Pathtracer& pathtracer, Film& film, uint32_t first, uint32_t end,
+                    const Render_Options& options) {
 	if (options.passes == 0 || options.pass < 1 || options.pass > options.passes) {
 		throw std::invalid_argument("render: pass " + std::to_string(options.pass) + " of " +
 		                            std::to_string(options.passes) + " (expected 1 <= pass <= passes)");
 	}
 	const Render_Settings& settings = pathtracer.settings;
-	Film film(settings.width, settings.height);
+	if (film.w != settings.width || film.h != settings.height) {
+		throw std::invalid_argument("render_samples: the film is " + std::to_string(film.w) + " x " +
+		                            std::to_string(film.h) + ", the settings " + std::to_string(settings.width) +
+		                            " x " + std::to_string(settings.height));
+	}
 	uint32_t threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
 	std::vector<Tile> tiles = make_tiles(settings.width, settings.height, tile_size(settings, options, threads));
 	if (options.shuffle_tiles) std::shuffle(tiles.begin(), tiles.end(), std::mt19937(12345));
@@ -64,7 +83,7 @@ Film render(const Pathtracer& pathtracer, const Render_Options& options) {
 	if (options.progress) options.progress(0, tiles.size()); // the bar appears at once
 	auto worker = [&]() {
 		for (size_t i; (i = next.fetch_add(1)) < tiles.size();) {
-			render_tile(pathtracer, settings, options, tiles[i], film);
+			render_tile(pathtracer, settings, options, tiles[i], first, end, film);
 			size_t finished = done.fetch_add(1) + 1;
 			if (options.progress) options.progress(finished, tiles.size());
 		}
@@ -73,5 +92,4 @@ Film render(const Pathtracer& pathtracer, const Render_Options& options) {
 	for (uint32_t t = 1; t < threads; t++) pool.emplace_back(worker);
 	worker();
 	for (auto& thread : pool) thread.join();
-	return film;
 }

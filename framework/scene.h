@@ -6,6 +6,7 @@
 #include "instance.h"
 #include "lights.h"
 #include "material.h"
+#include "render_observer.h"
 
 #include <optional>
 #include <string>
@@ -60,7 +61,9 @@ struct Scene {
 	}
 	// Whether anything is hit with t in ray.dist_bounds (it may stop at the first hit found).
 	bool occluded(const Ray& ray) const {
-		return accelerator.occluded(bvh, ray);
+		bool blocked = accelerator.occluded(bvh, ray);
+		report<Shadow_Ray_Tested>(blocked, ray); // the ray lifecycle shows shadow rays
+		return blocked;
 	}
 	// Radiance from the environment along dir (0 without an environment).
 	Spectrum environment_radiance(Vec3 dir) const;

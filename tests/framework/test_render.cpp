@@ -203,3 +203,37 @@ TEST_CASE("Film: non_finite() sums the pixels, non_finite_map() marks them, vari
 	CHECK(film.mean().pixels[5] == Spectrum{0.5f});
 	CHECK(film.variance().pixels[5] == Spectrum{0.0f}); // s^2 needs two samples; 0 with fewer
 }
+
+TEST_CASE("A film grown sample range by sample range equals the render of all its samples, bit for bit", "[render]") {
+	// ./lab view renders progressively (render_samples, in batches of any size) and promises the
+	// picture after N samples is the one `--spp N` renders.
+	Scene scene = sphere_scene();
+	for (Sampler sampler : {Sampler::independent, Sampler::sobol}) {
+		Render_Settings settings = scene.settings;
+		settings.samples = 7;
+		settings.sampler = sampler;
+		Pathtracer pathtracer(scene, settings, View::path);
+		Film whole = render(pathtracer);
+		Film grown(settings.width, settings.height);
+		uint32_t first = 0;
+		for (uint32_t end : {1u, 2u, 4u, 7u}) { // batches of 1, 1, 2 and 3 samples
+			Render_Options options;
+			options.threads = end; // any threads
+			render_samples(pathtracer, grown, first, end, options);
+			first = end;
+		}
+		for (size_t i = 0; i < whole.pixels.size(); i++) {
+			INFO("pixel " << i << ", sampler " << sampler_name(sampler));
+			REQUIRE(grown.pixels[i].count == whole.pixels[i].count);
+			REQUIRE(std::memcmp(&grown.pixels[i].mean, &whole.pixels[i].mean, sizeof(glm::dvec3)) == 0);
+			REQUIRE(std::memcmp(&grown.pixels[i].m2, &whole.pixels[i].m2, sizeof(glm::dvec3)) == 0);
+		}
+	}
+}
+
+TEST_CASE("render_samples refuses a film of another size than the settings'", "[render]") {
+	Scene scene = sphere_scene();
+	Pathtracer pathtracer(scene, scene.settings, View::path);
+	Film wrong(scene.settings.width + 1, scene.settings.height);
+	CHECK_THROWS_WITH(render_samples(pathtracer, wrong, 0, 1), Catch::Contains("the film is 25 x 18"));
+}

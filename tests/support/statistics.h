@@ -1,21 +1,12 @@
 #pragma once
 // Statistics for graders. Every random test uses a fixed seed and a threshold derived from the
 // test's own significance level, corrected for the number of tests that share it (Šidák).
+#include "significance.h" // sidak, normal_cdf, normal_quantile, two_sided_z
+
 #include <cstddef>
 #include <vector>
 
 namespace stats {
-
-// Šidák correction: the per-test significance that keeps the chance of ANY false failure among
-// `tests` independent tests at `alpha`: 1 - (1 - alpha)^(1 / tests).
-double sidak(double alpha, size_t tests);
-
-// Standard normal distribution: cdf Phi(z) and the quantile Phi^-1(p).
-double normal_cdf(double z);
-double normal_quantile(double p);
-
-// The |z| above which a two-sided z-test at significance alpha rejects.
-double two_sided_z(double alpha);
 
 // Regularized upper incomplete gamma function Q(a, x) = Gamma(a, x) / Gamma(a).
 double gamma_q(double a, double x);

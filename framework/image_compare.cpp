@@ -1,7 +1,7 @@
 #include "image_compare.h"
 
 #include "film.h"
-#include "statistics.h"
+#include "significance.h"
 
 #include <algorithm>
 #include <cmath>
