@@ -164,7 +164,7 @@ void follow(const Scene& scene, const Cli_Options& options, std::ostream& out) {
 	}
 	uint32_t samples = std::min(options.follow_samples, pathtracer.settings.samples);
 	if (options.follow_json) {
-		follow_pixel_json(pathtracer, x, y, samples, out);
+		follow_pixel_json(pathtracer, x, y, samples, out, options.follow_brightest);
 	} else {
 		follow_pixel(pathtracer, x, y, samples, out);
 	}

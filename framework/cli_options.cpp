@@ -159,10 +159,15 @@ const std::vector<Option>& option_table() {
 		 "instead of an image, print the life of every ray of pixel (X, Y)'s samples: what each ray hit, the "
 		 "BSDF and light samples, the weights and the radiance (pixel (0, 0) is the top-left)",
 		 [](auto& o, auto& name, auto& v) { o.follow_pixel = pixel(name, v); }},
-		{"--follow-samples", "N", "how many of that pixel's samples --follow-pixel prints, 1 to 1000 (default 1)",
-		 [](auto& o, auto& name, auto& v) { o.follow_samples = whole_number<uint32_t>(name, v, 1, 1000); }},
+		{"--follow-samples", "N",
+		 "how many of that pixel's samples --follow-pixel follows, 1 to 1000000 (default 1)",
+		 [](auto& o, auto& name, auto& v) { o.follow_samples = whole_number<uint32_t>(name, v, 1, 1000000); }},
 		{"--follow-format", "FORMAT", "text (default) or json: how --follow-pixel prints (json: for ./lab view)",
 		 [](auto& o, auto& name, auto& v) { o.follow_json = follow_format_json(name, v); }},
+		{"--follow-brightest", "K",
+		 "with --follow-format json: of the --follow-samples samples, only the K brightest, 1 to 1000 (where "
+		 "a firefly comes from)",
+		 [](auto& o, auto& name, auto& v) { o.follow_brightest = whole_number<uint32_t>(name, v, 1, 1000); }},
 		{"--stream", nullptr,
 		 "for ./lab view: render progressively up to --spp samples, writing the film to standard output "
 		 "after each batch of samples (binary: framework/film_stream.h); writes no image",

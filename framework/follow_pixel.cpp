@@ -4,19 +4,47 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
 namespace {
-// Records the samples of pixel (x, y) as render() draws them and calls `sample_done(s, value,
-// recorder)` after each.
-template<typename Sample_Done>
-void record_samples(const Pathtracer& pathtracer, uint32_t x, uint32_t y, uint32_t samples, Sample_Done&& sample_done) {
+// Sample s of pixel (x, y), as render() draws it.
+Spectrum trace_sample(const Pathtracer& pathtracer, uint32_t x, uint32_t y, uint32_t s) {
 	const Render_Settings& settings = pathtracer.settings;
-	size_t index = size_t(y) * settings.width + x;
+	RNG rng = RNG::for_sample(settings.seed, size_t(y) * settings.width + x, s, settings.sampler);
+	return pathtracer.trace_pixel(x, y, rng);
+}
+
+// Records the given samples of pixel (x, y) and calls `sample_done(s, value, recorder)` after each.
+template<typename Sample_Done>
+void record_samples(const Pathtracer& pathtracer, uint32_t x, uint32_t y, const std::vector<uint32_t>& samples,
+                    Sample_Done&& sample_done) {
 	Lifecycle_Recorder recorder;
+	for (uint32_t s : samples) sample_done(s, trace_sample(pathtracer, x, y, s), recorder);
+}
+
+std::vector<uint32_t> first_samples(uint32_t samples) {
+	std::vector<uint32_t> indices(samples);
+	std::iota(indices.begin(), indices.end(), 0u);
+	return indices;
+}
+
+// The `brightest` of samples 0 .. samples - 1 of largest luminance (non-finite ones first: they
+// are what a NaN map shows), brightest first. Tracing without a recorder is cheap: one pixel.
+std::vector<uint32_t> brightest_samples(const Pathtracer& pathtracer, uint32_t x, uint32_t y, uint32_t samples,
+                                        uint32_t brightest) {
+	std::vector<std::pair<float, uint32_t>> values;
 	for (uint32_t s = 0; s < samples; s++) {
-		RNG rng = RNG::for_sample(settings.seed, index, s, settings.sampler); // as render() does
-		Spectrum value = pathtracer.trace_pixel(x, y, rng);
-		sample_done(s, value, recorder);
+		float l = luminance(trace_sample(pathtracer, x, y, s));
+		values.push_back({std::isfinite(l) ? l : INFINITY, s});
 	}
+	size_t keep = std::min<size_t>(brightest, values.size());
+	std::partial_sort(values.begin(), values.begin() + keep, values.end(),
+	                  [](const auto& a, const auto& b) { return a.first > b.first || (a.first == b.first && a.second < b.second); });
+	std::vector<uint32_t> indices;
+	for (size_t i = 0; i < keep; i++) indices.push_back(values[i].second);
+	return indices;
 }
 
 nlohmann::json rgb(Vec3 v) {
@@ -64,13 +92,14 @@ void follow_pixel(const Pathtracer& pathtracer, uint32_t x, uint32_t y, uint32_t
 	// came back along a ray, so a channel that brought no light back has no known weight.
 	out << "(? in a weight or throughput: no light came back on that colour channel, so its weight is"
 	       " unknown)\n";
-	record_samples(pathtracer, x, y, samples, [&](uint32_t s, Spectrum, Lifecycle_Recorder& recorder) {
+	record_samples(pathtracer, x, y, first_samples(samples), [&](uint32_t s, Spectrum, Lifecycle_Recorder& recorder) {
 		out << "sample " << s << ": ";
 		recorder.print(out, pathtracer.scene.material_names);
 	});
 }
 
-void follow_pixel_json(const Pathtracer& pathtracer, uint32_t x, uint32_t y, uint32_t samples, std::ostream& out) {
+void follow_pixel_json(const Pathtracer& pathtracer, uint32_t x, uint32_t y, uint32_t samples, std::ostream& out,
+                       uint32_t brightest) {
 	const Render_Settings& settings = pathtracer.settings;
 	nlohmann::json doc{{"pixel", {x, y}},
 	                   {"seed", settings.seed},
@@ -79,7 +108,10 @@ void follow_pixel_json(const Pathtracer& pathtracer, uint32_t x, uint32_t y, uin
 	                   {"width", settings.width},
 	                   {"height", settings.height},
 	                   {"samples", nlohmann::json::array()}};
-	record_samples(pathtracer, x, y, samples, [&](uint32_t s, Spectrum value, Lifecycle_Recorder& recorder) {
+	std::vector<uint32_t> chosen = brightest > 0 ? brightest_samples(pathtracer, x, y, samples, brightest)
+	                                             : first_samples(samples);
+	doc["followed"] = samples;
+	record_samples(pathtracer, x, y, chosen, [&](uint32_t s, Spectrum value, Lifecycle_Recorder& recorder) {
 		nlohmann::json sample{{"index", s}, {"value", rgb(value)}, {"ray", nullptr}};
 		if (!recorder.rays().empty()) sample["ray"] = ray_json(pathtracer, *recorder.rays().front(), Spectrum{1.0f}, Spectrum{1.0f});
 		doc["samples"].push_back(sample);

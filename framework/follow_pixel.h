@@ -20,4 +20,7 @@ void follow_pixel(const Pathtracer& pathtracer, uint32_t x, uint32_t y, uint32_t
 //          "emitted": RGB, "contribution": RGB (throughput * emitted: what this vertex adds to
 //          the pixel), "radiance": RGB (what the ray brought back), "children": [RAY, ...]}
 // A weight that nothing tells (no light came back on that channel, lifecycle.h) is null.
-void follow_pixel_json(const Pathtracer& pathtracer, uint32_t x, uint32_t y, uint32_t samples, std::ostream& out);
+// brightest > 0: of the `samples` samples, only the `brightest` of largest luminance, brightest
+// first (where a firefly comes from), each with its index.
+void follow_pixel_json(const Pathtracer& pathtracer, uint32_t x, uint32_t y, uint32_t samples, std::ostream& out,
+                       uint32_t brightest = 0);

@@ -6,7 +6,6 @@
 #include "instance.h"
 #include "lights.h"
 #include "material.h"
-#include "render_observer.h"
 
 #include <optional>
 #include <string>
@@ -60,11 +59,7 @@ struct Scene {
 		return accelerator.hit(bvh, ray);
 	}
 	// Whether anything is hit with t in ray.dist_bounds (it may stop at the first hit found).
-	bool occluded(const Ray& ray) const {
-		bool blocked = accelerator.occluded(bvh, ray);
-		report<Shadow_Ray_Tested>(blocked, ray); // the ray lifecycle shows shadow rays
-		return blocked;
-	}
+	bool occluded(const Ray& ray) const;
 	// Radiance from the environment along dir (0 without an environment).
 	Spectrum environment_radiance(Vec3 dir) const;
 
