@@ -300,6 +300,7 @@ nlohmann::json Viewer_Session::state_locked() const {
 		sides[side_name(s)] = entry;
 	}
 	nlohmann::json result{{"scene", fs::path(scene).filename().string()},
+	                      {"scenes", scene_names()},
 	                      {"scene_folder", fs::path(config.scene).parent_path().string()},
 	                      {"view", view},
 	                      {"views", VIEWS},
