@@ -18,6 +18,8 @@ const lab = {
 	path: null,           // the last path document
 	pathSide: null,
 	build: null,
+	builds: 0,           // builds finished, and the student's pictures drawn before the last one ended
+	updatesAtBuild: 0,
 	grade: {task: 0, lines: [], status: null},
 	errors: [],
 };
@@ -202,6 +204,8 @@ function showBuild(build) {
 	$("build-state").textContent = `(${names[build.state] || build.state}${build.seconds ? `, ${build.seconds.toFixed(1)} s` : ""})`;
 	const list = $("diagnostics");
 	if (build.state === "building") return;
+	lab.builds++;
+	lab.updatesAtBuild = lab.updates.student;
 	list.innerHTML = "";
 	for (const d of build.diagnostics || []) {
 		if (d.severity === "note") continue;
