@@ -132,7 +132,7 @@ void render_and_write(const Scene& scene, const Cli_Options& options, Run_Times 
 // several times a second without the frames' cost showing in the render's speed. Samples are
 // added in index order (render_samples), so the film after N samples is render()'s with N.
 void stream(const Scene& scene, const Cli_Options& options, std::ostream& out) {
-	constexpr double STREAM_BATCH_SECONDS = 0.15;
+	constexpr double STREAM_BATCH_SECONDS = 0.25;
 	Pathtracer pathtracer(scene, scene.settings, options.view);
 	const Render_Settings& settings = pathtracer.settings;
 	Render_Options render_options;
