@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cstdio>
 #include <ostream>
+#include <thread>
 
 namespace {
 
@@ -129,8 +130,9 @@ void render_and_write(const Scene& scene, const Cli_Options& options, Run_Times 
 
 // --stream (./lab view): the render in batches of samples, the film written after each batch
 // (film_stream.h). Batches grow or shrink towards STREAM_BATCH_SECONDS, so that the page updates
-// several times a second without the frames' cost showing in the render's speed. Samples are
-// added in index order (render_samples), so the film after N samples is render()'s with N.
+// several times a second without the frames' cost showing in the render's speed; a frame is
+// written from a copy of the film on a thread of its own while the next batch renders. Samples
+// are added in index order (render_samples), so the film after N samples is render()'s with N.
 void stream(const Scene& scene, const Cli_Options& options, std::ostream& out) {
 	constexpr double STREAM_BATCH_SECONDS = 0.25;
 	Pathtracer pathtracer(scene, scene.settings, options.view);
@@ -140,17 +142,24 @@ void stream(const Scene& scene, const Cli_Options& options, std::ostream& out) {
 	Film film(settings.width, settings.height);
 	uint32_t done = 0, batch = 1;
 	double seconds = 0.0;
-	while (done < settings.samples && out) {
+	std::thread writer;
+	auto written = [&] { // waits for the last frame; false if the viewer went away
+		if (writer.joinable()) writer.join();
+		return bool(out);
+	};
+	while (done < settings.samples) {
 		uint32_t end = done + std::min(batch, settings.samples - done);
 		auto start = std::chrono::steady_clock::now();
 		render_samples(pathtracer, film, done, end, render_options);
 		double batch_seconds = seconds_since(start);
 		seconds += batch_seconds;
 		done = end;
-		write_frame(out, frame_of(film, done, seconds));
+		if (!written()) break;
+		writer = std::thread([&out, frame = film, done, seconds] { write_frame(out, frame, done, seconds); });
 		if (batch_seconds < 0.5 * STREAM_BATCH_SECONDS && batch < (1u << 16)) batch *= 2;
 		if (batch_seconds > 2.0 * STREAM_BATCH_SECONDS && batch > 1) batch /= 2;
 	}
+	written();
 }
 
 // --follow-pixel: the same paths the renderer takes for that pixel, printed ray by ray.

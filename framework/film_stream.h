@@ -37,10 +37,9 @@ constexpr uint32_t FILM_STREAM_VERSION = 1;
 // The largest frame a reader accepts: Render_Settings::MAX_PIXELS pixels.
 constexpr uint64_t FILM_STREAM_MAX_PIXELS = 4096 * 4096;
 
-Film_Frame frame_of(const Film& film, uint32_t samples, double seconds);
-
-// Writes one frame and flushes.
-void write_frame(std::ostream& out, const Film_Frame& frame);
+// Writes the film as one frame, `samples` per pixel rendered in `seconds`, and flushes. (Straight
+// from the film, in one pass: the renderer writes a frame after every batch.)
+void write_frame(std::ostream& out, const Film& film, uint32_t samples, double seconds);
 
 // Reads the next frame into `frame`: false at the end of the stream (before a frame starts);
 // throws Input_Error for a stream that is cut inside a frame or is not a film stream.

@@ -95,12 +95,13 @@ Viewer_Session::Viewer_Session(Viewer_Config config_, Event_Hub& hub_)
 }
 
 Viewer_Session::~Viewer_Session() {
-	stopping = true;
 	{
 		std::lock_guard<std::mutex> lock(mutex);
+		stopping = true;
 		for (Child_Process* child : running) child->kill();
 	}
-	for (std::thread* thread : {&watcher, &builder, &grader}) {
+	comparison_asked.notify_all();
+	for (std::thread* thread : {&watcher, &builder, &grader, &comparer}) {
 		if (thread->joinable()) thread->join();
 	}
 	auto a = stop_side(Side::student);
@@ -110,6 +111,7 @@ Viewer_Session::~Viewer_Session() {
 void Viewer_Session::start() {
 	start_side(Side::reference);
 	if (!config.compare) return;
+	comparer = std::thread([this] { compare_when_asked(); });
 	if (config.rebuild_command.empty()) {
 		start_side(Side::student);
 	} else {
@@ -168,7 +170,23 @@ void Viewer_Session::on_frame(Side s, uint64_t generation, std::shared_ptr<const
 		event["side"] = side_name(s);
 	}
 	hub.publish("frame", event.dump());
-	if (config.compare) compare_latest();
+	if (config.compare) {
+		std::lock_guard<std::mutex> lock(mutex);
+		comparison_wanted = true;
+		comparison_asked.notify_one();
+	}
+}
+
+void Viewer_Session::compare_when_asked() {
+	for (;;) {
+		{
+			std::unique_lock<std::mutex> lock(mutex);
+			comparison_asked.wait(lock, [this] { return comparison_wanted || stopping; });
+			if (stopping) return;
+			comparison_wanted = false;
+		}
+		compare_latest();
+	}
 }
 
 void Viewer_Session::on_end(Side s, uint64_t generation, int status, const std::string& errors) {

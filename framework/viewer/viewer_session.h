@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include <atomic>
+#include <condition_variable>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -116,6 +117,7 @@ private:
 	void on_frame(Side side, uint64_t generation, std::shared_ptr<const Film_Frame> frame);
 	void on_end(Side side, uint64_t generation, int status, const std::string& errors);
 	void compare_latest();
+	void compare_when_asked(); // the comparer thread: compares the latest frames once asked
 	void watch_student_files();
 	bool student_renderer_ready() const;
 	void publish_state();
@@ -144,6 +146,10 @@ private:
 
 	std::mutex build_mutex; // one build at a time
 	std::atomic<bool> stopping{false};
-	std::thread watcher, builder, grader;
+	std::thread watcher, builder, grader, comparer;
+	// New frames to compare: set by the frame readers, taken by the comparer, so that a reader
+	// goes back to its pipe at once (the renderer waits while its frame is unread).
+	bool comparison_wanted = false;
+	std::condition_variable comparison_asked;
 	std::vector<Child_Process*> running; // builds and graders, under `mutex`
 };
