@@ -85,7 +85,8 @@ Viewer_Server::~Viewer_Server() = default;
 
 int Viewer_Server::bind(int port) {
 	int bound = port == 0 ? server->bind_to_any_port("127.0.0.1") : (server->bind_to_port("127.0.0.1", port) ? port : -1);
-	if (bound < 0) throw std::runtime_error("cannot listen on 127.0.0.1:" + std::to_string(port) + " (is it in use?)");
+	if (bound < 0) throw std::runtime_error("cannot listen on 127.0.0.1:" + std::to_string(port) +
+		                         " (is another viewer running there? ./lab view --port N chooses another port)");
 	return bound;
 }
 
