@@ -104,7 +104,7 @@ try {
 	const early = await lab(() => window.labViewer.comparison);
 	const windowStart = {time: Date.now(), updates: await lab(() => window.labViewer.updates.student)};
 	await waitFor((s) => window.labViewer.comparison && window.labViewer.comparison.student_samples >= s &&
-		window.labViewer.comparison.reference_samples >= s, 8 * early.student_samples);
+		window.labViewer.comparison.reference_samples >= s, 4 * early.student_samples);
 	const late = await lab(() => window.labViewer.comparison);
 	measured.updates_per_second = (await lab(() => window.labViewer.updates.student) - windowStart.updates) /
 		((Date.now() - windowStart.time) / 1000);
