@@ -1,7 +1,7 @@
 #pragma once
 // Where a world-space point appears on the film: the inverse of Camera::generate_ray, so that the
-// viewer (./lab view) can draw a pixel's path over the image. Sealed (framework/sealed/): its
-// source would give task 1 away.
+// viewer (./lab view) can draw a pixel's path over the image. A student release ships it compiled:
+// its source would give task 1 away.
 #include "camera.h"
 
 #include <optional>

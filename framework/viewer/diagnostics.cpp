@@ -19,3 +19,11 @@ std::vector<Diagnostic> parse_diagnostics(const std::string& log) {
 	}
 	return found;
 }
+
+std::string last_lines(const std::string& log, size_t lines) {
+	size_t end = log.size(), start = end;
+	for (size_t n = 0; start > 0; start--) {
+		if (log[start - 1] == '\n' && start != end && ++n > lines) break;
+	}
+	return log.substr(start);
+}

@@ -14,3 +14,6 @@ struct Diagnostic {
 // GCC's "FILE:LINE:COLUMN: SEVERITY: MESSAGE" (and "FILE:LINE: SEVERITY: ...") lines, and the
 // linker's "undefined reference to ..." lines, in the order of the log.
 std::vector<Diagnostic> parse_diagnostics(const std::string& log);
+
+// The last `lines` lines of a log: what the page shows of a long one.
+std::string last_lines(const std::string& log, size_t lines);

@@ -119,7 +119,6 @@ private:
 	void compare_latest();
 	void compare_when_asked(); // the comparer thread: compares the latest frames once asked
 	void watch_student_files();
-	bool student_renderer_ready() const;
 	void publish_state();
 	nlohmann::json state_locked() const; // with the mutex held
 	// Runs a build or a grader, handing each line of its output (and standard error) to `line`;
