@@ -267,3 +267,21 @@ TEST_CASE("A grader run from the page sends its lines and its exit status; one r
 	CHECK(graded["status"] == 3);
 	CHECK(viewer.post("/api/grade?task=5")->status == 202); // once it has ended
 }
+
+TEST_CASE("A renderer that crashes is shown as failed with its last words, and the viewer goes on", "[viewer]") {
+	fs::path dir = scratch_folder("crash");
+	fs::path crashing = dir / "pathtracer_crashing"; // stands in for a student's renderer that crashes
+	std::ofstream(crashing) << "#!/bin/sh\necho 'in Triangle::hit' >&2\nkill -SEGV $$\n";
+	fs::permissions(crashing, fs::perms::owner_all);
+	Viewer_Config config = config_in(dir, 4);
+	config.student_renderer = crashing.string();
+	Running_Viewer viewer(config);
+	nlohmann::json student;
+	for (int i = 0; i < 500 && (student = viewer.session.state()["sides"]["student"])["state"] != "failed"; i++) {
+		std::this_thread::sleep_for(10ms);
+	}
+	CHECK(student["state"] == "failed");
+	CHECK_THAT(student["message"].get<std::string>(), Catch::Contains("in Triangle::hit") && Catch::Contains("killed by signal 11"));
+	viewer.wait_for_samples("reference", 1); // the other side renders on
+	CHECK(viewer.get("/api/image?side=student&layer=mean")->status == 409);
+}

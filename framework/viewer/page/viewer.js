@@ -21,7 +21,6 @@ const lab = {
 	builds: 0,           // builds finished, and the student's pictures drawn before the last one ended
 	updatesAtBuild: 0,
 	grade: {task: 0, lines: [], status: null},
-	errors: [],
 };
 window.labViewer = lab;
 
@@ -190,7 +189,7 @@ function showState(state) {
 	$("pictures").classList.toggle("alone", !state.compare);
 	for (const [side, info] of Object.entries(state.sides)) {
 		$(`${side}-state`).textContent = info.state;
-		if (info.message) lab.errors.push(`${side}: ${info.message}`);
+		$(`${side}-message`).textContent = info.message; // why a renderer failed (a crash of task code)
 	}
 	if (state.build !== "none") $("build-state").textContent = `(build: ${state.build})`;
 	showComparison(state.comparison);
@@ -395,7 +394,7 @@ function wire() {
 	on("comparison", showComparison);
 	on("renderer", (e) => {
 		$(`${e.side}-state`).textContent = e.state;
-		if (e.state === "failed") $("path-error").textContent = `the ${e.side} renderer failed:\n${e.message}`;
+		$(`${e.side}-message`).textContent = e.state === "failed" ? e.message : "";
 	});
 	on("build", showBuild);
 	on("grade", showGradeLine);
