@@ -35,7 +35,7 @@ cmake --build "$objects" --parallel "$jobs" --target "${archives[@]}" >&2
 mkdir -p "$dest/tests" "$dest/prebuilt" "$dest/tools"
 (cd "$root" && cp -R CMakeLists.txt CMakePresets.json lab cmake framework tasks student scenes handouts "$dest/")
 rm -r "$dest/framework/sealed" "$dest/framework/accel/fast"
-cp "$root/tools/compile-student" "$dest/tools/"
+cp "$root/tools/compile-student" "$root/tools/sandboxed" "$dest/tools/"
 (cd "$root/tests" && cp -R CMakeLists.txt judge support framework task1 task2 task3 task4 task5 task6 task6_nee task7 report "$dest/tests/")
 cp "$objects"/prebuilt/libtask[1-7]_reference.a "$objects"/prebuilt/libaccelerator_fast.a \
 	"$objects/prebuilt/libframework_sealed.a" "$dest/prebuilt/"
