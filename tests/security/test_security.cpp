@@ -400,3 +400,22 @@ TEST_CASE("a file that keeps the compiler busy is stopped by the time limit, and
 	CHECK_FALSE(busy.built);
 	CHECK_THAT(busy.messages, Catch::Contains("did not finish in 2 s"));
 }
+
+TEST_CASE("a task-4 file whose shade() is the framework's NEE integrator earns nothing for shade()", "[security]") {
+	// The integrator is not linked where task 4 is graded (tests/security/test_subject_symbols.sh).
+	// What the file's honest Lambertian BSDF earns, with the stub's shade(), is the most it may earn.
+	Temp_Dir dir;
+	std::string source = hostile_source("task4_shade_by_nee_integrator.cpp", dir.path() / "out");
+	std::string by_nee = "return trace_nee(*this, rng, camera_ray);";
+	size_t at = source.find(by_nee);
+	REQUIRE(at != std::string::npos);
+	std::string honest = source;
+	honest.replace(at, by_nee.size(), "return eye_light(ray, hit);");
+	Grade bsdf_only = grade_files(dir, {{4, honest}}, "--tasks 4")[4];
+	Grade hostile = grade("task4_shade_by_nee_integrator.cpp", 4);
+	INFO("the judge's messages:\n" << hostile.messages.substr(0, 3000));
+	CHECK(hostile.built);
+	CHECK(bsdf_only.passed > 0);
+	CHECK(hostile.passed <= bsdf_only.passed);
+	CHECK_THAT(hostile.messages, Catch::Contains("not part of a program built with your task 4"));
+}
