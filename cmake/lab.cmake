@@ -83,8 +83,9 @@ endfunction()
 # named and every other task from <impl>, e.g. lab_link_tasks(grader_task3_student reference TASK3
 # student); then the framework, with the accelerator that suits the choice (framework/accel/
 # accelerator.h): the fast one only where tasks 2 and 3 are both the reference, else the plain one,
-# which is task 3's BVH::hit, so that a student's code runs end to end. ACCELERATOR fast|plain
-# overrides that choice: only to prove that a test notices the wrong one.
+# which is task 3's BVH::hit, so that a student's code runs end to end; and the NEE integrator
+# only where task 4 is the reference (framework/CMakeLists.txt). ACCELERATOR fast|plain overrides the
+# accelerator's choice: only to prove that a test notices the wrong one.
 function(lab_link_tasks target impl)
 	cmake_parse_arguments(PARSE_ARGV 2 arg "" "TASK1;TASK2;TASK3;TASK4;TASK5;TASK6;TASK7;ACCELERATOR" "")
 	if(arg_UNPARSED_ARGUMENTS)
@@ -105,5 +106,10 @@ function(lab_link_tasks target impl)
 			set(accelerator plain)
 		endif()
 	endif()
-	target_link_libraries(${target} PRIVATE accelerator_${accelerator} framework)
+	# Next-event estimation is an estimator of task 4's image: only with the reference of task 4.
+	set(integrator none)
+	if(impl_4 STREQUAL "reference")
+		set(integrator nee)
+	endif()
+	target_link_libraries(${target} PRIVATE accelerator_${accelerator} integrator_${integrator} framework)
 endfunction()

@@ -24,7 +24,7 @@ fi
 cmake -S "$root" --preset dev -B "$objects" >&2
 archives=(framework_sealed_archive)
 for n in 1 2 3 4 5 6 7; do archives+=("task${n}_reference_archive"); done
-archives+=(accelerator_fast_archive)
+archives+=(accelerator_fast_archive integrator_nee_archive)
 cmake --build "$objects" --parallel "$jobs" --target "${archives[@]}" >&2
 
 # The tree: everything but reference/, the framework's code that carries task algorithms
@@ -35,9 +35,9 @@ cmake --build "$objects" --parallel "$jobs" --target "${archives[@]}" >&2
 mkdir -p "$dest/tests" "$dest/prebuilt" "$dest/tools"
 (cd "$root" && cp -R CMakeLists.txt CMakePresets.json lab cmake framework tasks student scenes handouts "$dest/")
 rm -r "$dest/framework/sealed" "$dest/framework/accel/fast"
-cp "$root/tools/compile-student" "$dest/tools/"
+cp "$root/tools/compile-student" "$root/tools/sandboxed" "$dest/tools/"
 (cd "$root/tests" && cp -R CMakeLists.txt judge support framework task1 task2 task3 task4 task5 task6 task6_nee task7 report "$dest/tests/")
-cp "$objects"/prebuilt/libtask[1-7]_reference.a "$objects"/prebuilt/libaccelerator_fast.a \
+cp "$objects"/prebuilt/libtask[1-7]_reference.a "$objects"/prebuilt/libaccelerator_fast.a "$objects"/prebuilt/libintegrator_nee.a \
 	"$objects/prebuilt/libframework_sealed.a" "$dest/prebuilt/"
 
 # The students' README: the "For students" section of the instructors' README.

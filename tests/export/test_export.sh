@@ -31,6 +31,7 @@ for n in 1 2 3 4 5 6 7; do
 done
 [ ! -e "$release/framework/accel/fast" ] || fail "the release has the fast accelerator's source, framework/accel/fast/"
 [ -f "$release/prebuilt/libaccelerator_fast.a" ] || fail "prebuilt/libaccelerator_fast.a is missing"
+[ -f "$release/prebuilt/libintegrator_nee.a" ] || fail "prebuilt/libintegrator_nee.a is missing"
 # Code lines (not comments) of reference/ long enough to be distinctive, absent from the stubs and
 # not quoted on purpose by a handout. A single line can recur by coincidence (a test oracle does
 # the same thing); three in one file mean copied code.

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The Gradescope autograder bundle's contents (label gradescope): ./lab autograder makes OUT/autograder.zip
-# with a grading seed, and it must hold setup.sh and run_autograder at its root, the rubric and the
-# seed it was given, the prebuilt reference and no reference source; and a run_autograder that
-# cannot grade (here: setup.sh never ran) must still leave Gradescope a results.json that says so.
+# with a grading seed and leave to grade unsandboxed (a chroot, as test_autograder.sh uses, cannot
+# make namespaces), and it must hold setup.sh and run_autograder at its root, the rubric, the seed
+# it was given (readable by its owner alone) and that leave, the prebuilt reference and no reference
+# source; and a run_autograder that cannot grade (here: setup.sh never ran) must still leave
+# Gradescope a results.json that says so.
 # test_autograder.sh (label acceptance) runs this first, then grades with the bundle in a Debian root.
 #   test_bundle.sh REPOSITORY_ROOT OUT
 set -euo pipefail
@@ -15,7 +17,7 @@ rm -rf "$out"
 mkdir -p "$out"
 
 start=$SECONDS
-LAB_EXPORT_BUILD_DIR=$out/objects "$root/tools/make-autograder" "$out/autograder.zip" --seed 4242 >/dev/null ||
+LAB_EXPORT_BUILD_DIR=$out/objects "$root/tools/make-autograder" "$out/autograder.zip" --seed 4242 --allow-unsandboxed >/dev/null ||
 	fail "./lab autograder failed"
 unzip -Z1 "$out/autograder.zip" >"$out/bundle.txt"
 has() { grep -qx "$1" "$out/bundle.txt" || fail "the bundle has no $1"; }
@@ -24,6 +26,9 @@ has run_autograder
 has tools/grade-submission
 has grading/rubric.json
 has grading/seed
+has grading/allow-unsandboxed
+has tools/sandboxed
+unzip -Z "$out/autograder.zip" grading/seed | grep -q '^-rw-------' || fail "grading/seed is readable by others than its owner"
 for n in 1 2 3 4 5 6 7; do has "prebuilt/libtask${n}_reference.a"; done
 ! grep -Eq "^reference/|^framework/sealed/|^framework/accel/fast/" "$out/bundle.txt" ||
 	fail "the bundle holds solution sources: $(grep -E "^reference/|^framework/sealed/|^framework/accel/fast/" "$out/bundle.txt" | head -3)"

@@ -1,7 +1,7 @@
 // The judge's program: Catch2's runner with the judge's options, and the per-test-case subject.
 //
-//   judge_taskN --subject PROGRAM [--seed S | --seed @FILE] [--sandbox auto|bubblewrap|none]
-//               [--time-limit SECONDS] [--save-requests DIR] [Catch2 options]
+//   judge_taskN --subject PROGRAM [--seed S | --seed @FILE] [--sandbox auto|bubblewrap|process-limits|none]
+//               [--time-limit SECONDS] [--cpu-limit SECONDS] [--save-requests DIR] [Catch2 options]
 #define CATCH_CONFIG_RUNNER
 #define CATCH_CONFIG_EXTERNAL_INTERFACES
 #include <catch2/catch.hpp>
@@ -10,10 +10,13 @@
 #include "verdict_summary.h"
 
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
+
+#include <sys/prctl.h>
 
 namespace {
 
@@ -27,6 +30,7 @@ struct Judge_State {
 	size_t test_case_number = 0;
 	Subject::Clock::time_point deadline;
 	std::unique_ptr<Subject> subject;
+	Hang_Record hangs; // over the whole run
 };
 
 Judge_State& state() {
@@ -87,7 +91,7 @@ namespace judge {
 
 Subject& subject() {
 	Judge_State& s = state();
-	if (!s.subject) s.subject = std::make_unique<Subject>(s.program, *s.sandbox, s.deadline, requests_file());
+	if (!s.subject) s.subject = std::make_unique<Subject>(s.program, *s.sandbox, s.deadline, s.hangs, requests_file());
 	return *s.subject;
 }
 
@@ -123,19 +127,33 @@ struct Lab_Reporter : Catch::ConsoleReporter {
 CATCH_REGISTER_REPORTER("lab", Lab_Reporter)
 
 int main(int argc, char** argv) {
+	// Not dumpable: a subject running as the same user (process limits, no Landlock) can neither
+	// trace the judge nor read or write its memory through /proc.
+	prctl(PR_SET_DUMPABLE, 0, 0, 0, 0);
 	Catch::Session session;
 	session.configData().reporterName = "lab";
 	Judge_State& s = state();
-	std::string sandbox_mode = "auto", seed_text;
-	double time_limit = 0.0;
+	std::string sandbox_mode = "auto", seed_text, check_sandbox;
+	double time_limit = 0.0, cpu_limit = 0.0;
 	using Catch::clara::Opt;
 	session.cli(session.cli() |
 	            Opt(s.program, "program")["--subject"]("the subject program that runs the code under test") |
 	            Opt(seed_text, "seed|@file")["--seed"]("an instructor's secret grading seed, or a file holding it") |
-	            Opt(sandbox_mode, "auto|bubblewrap|none")["--sandbox"]("how the subject runs (default auto)") |
+	            Opt(sandbox_mode, "auto|bubblewrap|process-limits|none")["--sandbox"]("how the subject runs (default auto)") |
 	            Opt(time_limit, "seconds")["--time-limit"]("wall time per request (default 30; 3 times that per test case)") |
-	            Opt(s.save_dir, "folder")["--save-requests"]("save failed test cases' requests for --replay"));
+	            Opt(cpu_limit, "seconds")["--cpu-limit"]("CPU time of one test case's subject (default 90)") |
+	            Opt(s.save_dir, "folder")["--save-requests"]("save failed test cases' requests for --replay") |
+	            Opt(check_sandbox, "mode")["--check-sandbox"]("say how subjects would run in that mode, and exit"));
 	if (int status = session.applyCommandLine(argc, argv)) return status;
+	if (!check_sandbox.empty()) {
+		try {
+			std::cout << Sandbox::choose(check_sandbox).notice() << "\n";
+			return 0;
+		} catch (const std::exception& problem) {
+			std::cerr << "judge: " << problem.what() << "\n";
+			return 3;
+		}
+	}
 	if (session.configData().listTests || session.configData().listTestNamesOnly || session.configData().showHelp) {
 		s.sandbox = Sandbox::choose("none");
 		return session.run();
@@ -152,6 +170,8 @@ int main(int argc, char** argv) {
 			s.sandbox->limits().request_seconds = time_limit;
 			s.sandbox->limits().test_case_seconds = 3.0 * time_limit;
 		}
+		if (cpu_limit < 0.0) throw std::invalid_argument("--cpu-limit must be positive");
+		if (cpu_limit > 0.0) s.sandbox->limits().cpu_seconds = uint64_t(std::ceil(cpu_limit));
 		if (!s.save_dir.empty()) std::filesystem::create_directories(s.save_dir);
 	} catch (const std::exception& problem) {
 		std::cerr << "judge: " << problem.what() << "\n";

@@ -1,5 +1,7 @@
 #include "sandbox.h"
 
+#include "landlock.h"
+
 #include <cerrno>
 #include <cstddef>
 #include <cstdio>
@@ -44,21 +46,39 @@ Sandbox Sandbox::choose(const std::string& requested) {
 		sandbox.notice_ = "sandbox: none (debug mode: your code runs in a fresh process with the time limits only)";
 		return sandbox;
 	}
-	if (requested != "auto" && requested != "bubblewrap") {
-		throw std::invalid_argument("--sandbox must be auto, bubblewrap or none, not '" + requested + "'");
+	if (requested != "auto" && requested != "bubblewrap" && requested != "process-limits") {
+		throw std::invalid_argument("--sandbox must be auto, bubblewrap, process-limits or none, not '" + requested + "'");
 	}
-	sandbox.mode_ = Mode::bubblewrap;
-	std::string problem = try_bubblewrap(sandbox);
-	if (problem.empty()) {
-		sandbox.notice_ = "sandbox: bubblewrap (no network, read-only system files, private /tmp, own process "
-		                  "namespace; limits on time, memory, file size and processes)";
-		return sandbox;
+	std::string problem;
+	if (requested != "process-limits") {
+		sandbox.mode_ = Mode::bubblewrap;
+		problem = try_bubblewrap(sandbox);
+		if (!problem.empty()) {
+			// bubblewrap before 0.7 (Ubuntu 22.04's) has no --size: do without that one option.
+			sandbox.scratch_size_ = false;
+			if (!try_bubblewrap(sandbox).empty()) sandbox.scratch_size_ = true;
+			else problem.clear();
+		}
+		if (problem.empty()) {
+			sandbox.notice_ = "sandbox: bubblewrap (no network, read-only system files, private /tmp, own process "
+			                  "namespace; limits on time, memory, file size and processes)";
+			if (!sandbox.scratch_size_) sandbox.notice_ += "; this bubblewrap has no --size, so /tmp has no size limit";
+			return sandbox;
+		}
+		if (requested == "bubblewrap") throw std::runtime_error("bubblewrap cannot run here: " + problem);
 	}
-	if (requested == "bubblewrap") throw std::runtime_error("bubblewrap cannot run here: " + problem);
 	sandbox.mode_ = Mode::process_limits;
-	sandbox.notice_ = "sandbox: PROCESS LIMITS ONLY, bubblewrap cannot create its namespaces here (" + problem +
-	                  "): your code runs without file-system isolation, with limits on time, memory, file size "
-	                  "and processes and no sockets";
+	Landlock_Rules probe({}, {});
+	sandbox.landlock_ = probe.available();
+	sandbox.notice_ = "sandbox: PROCESS LIMITS ONLY (" +
+	                  (problem.empty() ? std::string("as asked") : "bubblewrap cannot run here: " + problem) +
+	                  "). What holds: " +
+	                  (geteuid() == 0 ? "your code runs as another user (uid 65534)" : "your code runs as the grader's own user") +
+	                  "; " +
+	                  (sandbox.landlock_ ? "Landlock: it may read only the system and its own program, and write no file"
+	                                     : "NO file-system confinement (" + probe.problem() + ")") +
+	                  "; a clean environment; limits on time, memory, file size and open files; no new processes, "
+	                  "signals, tracing or sockets (seccomp); the grader's processes cannot be read or traced";
 	return sandbox;
 }
 
@@ -76,9 +96,13 @@ std::vector<std::string> Sandbox::command(const std::string& program, int seccom
 			args.insert(args.end(), {"--ro-bind", dir, dir});
 		}
 	}
-	args.insert(args.end(), {"--proc", "/proc", "--dev", "/dev", "--size", std::to_string(limits_.scratch_bytes),
-	                         "--tmpfs", "/tmp", "--chdir", "/tmp", "--clearenv", "--setenv", "HOME", "/tmp",
-	                         "--setenv", "PATH", "/usr/bin:/bin"});
+	args.insert(args.end(), {"--proc", "/proc", "--dev", "/dev"});
+	// Private scratch folders: /tmp, and /dev/shm so that shared memory is no way around its size.
+	for (const char* scratch : {"/tmp", "/dev/shm"}) {
+		if (scratch_size_) args.insert(args.end(), {"--size", std::to_string(limits_.scratch_bytes)});
+		args.insert(args.end(), {"--tmpfs", scratch});
+	}
+	args.insert(args.end(), {"--chdir", "/tmp", "--clearenv", "--setenv", "HOME", "/tmp", "--setenv", "PATH", "/usr/bin:/bin"});
 	if (seccomp_fd >= 0) args.insert(args.end(), {"--seccomp", std::to_string(seccomp_fd)});
 	if (program == "/bin/true") {
 		args.insert(args.end(), {"--", program});
@@ -104,8 +128,9 @@ std::string seccomp_filter() {
 		program.push_back(BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, call, 0, 1));
 		program.push_back(BPF_STMT(BPF_RET | BPF_K, action));
 	};
+	// memfd_create: memory that no limit counts.
 	for (uint32_t call : {SYS_fork, SYS_vfork, SYS_kill, SYS_ptrace, SYS_process_vm_readv, SYS_process_vm_writev,
-	                      SYS_socket, SYS_setsid}) {
+	                      SYS_socket, SYS_setsid, SYS_memfd_create}) {
 		deny(call, DENY);
 	}
 	// clone3 passes its flags in memory a filter cannot read: ENOSYS makes the C library use clone.

@@ -3,8 +3,9 @@
 // file system but the system's libraries and the subject program itself (read-only), a private
 // scratch folder, its own process-id namespace (every process it starts dies with it), and limits
 // on CPU time, memory, file size, open files and processes. Where bubblewrap cannot create its
-// namespaces (some containers), the subject runs with the process limits alone, and every report
-// says so.
+// namespaces (some containers), the subject runs with the process limits, as another user where the
+// judge is root, confined to reading the system by Landlock where the kernel has it (landlock.h),
+// and every report says which of these held.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -24,8 +25,9 @@ public:
 	enum class Mode { bubblewrap, process_limits, none };
 
 	// `requested`: "auto" (bubblewrap if it works here, else process limits), "bubblewrap" (an
-	// error if it does not work), "none" (for --debug: a sanitizer's runtime needs the address
-	// space; still a fresh process with the time limits).
+	// error if it does not work), "process-limits" (as where bubblewrap cannot run), "none" (for
+	// --debug: a sanitizer's runtime needs the address space; still a fresh process with the time
+	// limits).
 	static Sandbox choose(const std::string& requested);
 
 	Mode mode() const {
@@ -38,6 +40,10 @@ public:
 	const Sandbox_Limits& limits() const {
 		return limits_;
 	}
+	// With process limits: whether the kernel confines the subject's files by Landlock (landlock.h).
+	bool landlock() const {
+		return landlock_;
+	}
 	Sandbox_Limits& limits() {
 		return limits_;
 	}
@@ -48,11 +54,13 @@ public:
 
 private:
 	Mode mode_ = Mode::process_limits;
+	bool scratch_size_ = true; // bwrap --size (bubblewrap >= 0.7)
+	bool landlock_ = false;
 	std::string notice_;
 	Sandbox_Limits limits_;
 };
 
 // The system-call filter every subject runs under (a classic BPF program for seccomp): no new
 // processes (threads are allowed), no signals to other processes, no tracing of other processes,
-// no sockets. Empty where the lab has no filter for the machine's architecture.
+// no sockets, no memfd_create. Empty where the lab has no filter for the machine's architecture.
 std::string seccomp_filter();

@@ -1,16 +1,20 @@
 #include "subject.h"
 
+#include "landlock.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <thread>
 #include <utility>
 #include <vector>
 
 #include <fcntl.h>
+#include <grp.h>
 #include <linux/filter.h>
 #include <linux/seccomp.h>
 #include <poll.h>
@@ -38,7 +42,7 @@ std::string seconds(double s) {
 
 // The child's side of fork(): only system calls from here to exec (the judge may have threads).
 [[noreturn]] void become_subject(const std::vector<char*>& argv, const Sandbox& sandbox, int requests, int answers,
-                                 int log, int seccomp, const sock_fprog* filter) {
+                                 int log, int seccomp, const sock_fprog* filter, const Landlock_Rules* files) {
 	setsid(); // its own process group, killed whole on a time limit
 	int null = open("/dev/null", O_RDONLY | O_CLOEXEC);
 	dup2(null, 0);
@@ -47,25 +51,31 @@ std::string seconds(double s) {
 	dup2(requests, protocol::REQUEST_FD);
 	dup2(answers, protocol::ANSWER_FD);
 	if (seccomp >= 0) dup2(seccomp, SECCOMP_FD);
-	close_range(SECCOMP_FD + 1, ~0u, 0);
 	const Sandbox_Limits& limits = sandbox.limits();
-	auto limit = [](int resource, uint64_t value) {
-		rlimit r{rlim_t(value), rlim_t(value)};
+	auto limit = [](int resource, uint64_t soft, uint64_t hard) {
+		rlimit r{rlim_t(soft), rlim_t(hard)};
 		setrlimit(resource, &r);
 	};
-	limit(RLIMIT_CPU, limits.cpu_seconds);
-	limit(RLIMIT_FSIZE, limits.file_bytes);
-	limit(RLIMIT_NOFILE, limits.open_files);
-	limit(RLIMIT_CORE, 0);
-	if (sandbox.mode() != Sandbox::Mode::none) limit(RLIMIT_AS, limits.memory_bytes);
+	// The CPU limit's hard value a little above the soft one: SIGXCPU at the soft one says "CPU time".
+	limit(RLIMIT_CPU, limits.cpu_seconds, limits.cpu_seconds + 5);
+	limit(RLIMIT_FSIZE, limits.file_bytes, limits.file_bytes);
+	limit(RLIMIT_NOFILE, limits.open_files, limits.open_files);
+	limit(RLIMIT_CORE, 0, 0);
+	if (sandbox.mode() != Sandbox::Mode::none) limit(RLIMIT_AS, limits.memory_bytes, limits.memory_bytes);
 	prctl(PR_SET_PDEATHSIG, SIGKILL);
+	char* const clean_environment[] = {const_cast<char*>("PATH=/usr/bin:/bin"), nullptr};
 	if (sandbox.mode() == Sandbox::Mode::process_limits) {
-		// Without namespaces: not root, and the system-call filter installed here.
-		if (geteuid() == 0 && (setgid(65534) != 0 || setuid(65534) != 0)) _exit(126);
+		// Without namespaces: another user where the judge is root, files by Landlock, a clean
+		// environment, and the system-call filter installed here.
+		if (geteuid() == 0 && (setgroups(0, nullptr) != 0 || setgid(65534) != 0 || setuid(65534) != 0)) _exit(126);
+		if (files && !files->apply_to_self()) _exit(126);
+		if (chdir("/") != 0) _exit(126); // not the grader's folder
 		prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0);
 		if (filter && prctl(PR_SET_SECCOMP, SECCOMP_MODE_FILTER, filter) != 0) _exit(126);
 	}
-	execv(argv[0], argv.data());
+	close_range(SECCOMP_FD + 1, ~0u, 0);
+	if (sandbox.mode() == Sandbox::Mode::process_limits) execve(argv[0], argv.data(), clean_environment);
+	else execv(argv[0], argv.data());
 	_exit(127);
 }
 
@@ -93,9 +103,9 @@ bool wait_writable(int fd, Subject::Clock::time_point until) {
 
 } // namespace
 
-Subject::Subject(const std::string& program, const Sandbox& sandbox, Clock::time_point deadline,
+Subject::Subject(const std::string& program, const Sandbox& sandbox, Clock::time_point deadline, Hang_Record& hangs,
                  const std::string& save_requests)
-	: sandbox(sandbox), deadline(deadline), save_requests(save_requests) {
+	: sandbox(sandbox), deadline(deadline), hangs(hangs), save_requests(save_requests) {
 	std::signal(SIGPIPE, SIG_IGN); // a subject that is gone is an error on write, not a signal
 	int requests[2], answers[2], filter_pipe[2] = {-1, -1};
 	if (pipe2(requests, O_CLOEXEC) != 0 || pipe2(answers, O_CLOEXEC) != 0) {
@@ -132,10 +142,20 @@ Subject::Subject(const std::string& program, const Sandbox& sandbox, Clock::time
 	for (std::string& arg : args) argv.push_back(arg.data());
 	argv.push_back(nullptr);
 
+	// Where bubblewrap cannot run: the subject may read the system and its own program, and write
+	// nothing (the descriptors it is given stay open).
+	std::optional<Landlock_Rules> files;
+	if (sandbox.mode() == Sandbox::Mode::process_limits && sandbox.landlock()) {
+		std::vector<std::string> readable = system_files();
+		readable.push_back(program);
+		files.emplace(readable, std::vector<std::string>{});
+	}
+
 	pid = fork();
 	if (pid < 0) throw std::runtime_error(std::string("judge: cannot fork: ") + std::strerror(errno));
 	if (pid == 0) {
-		become_subject(argv, sandbox, requests[0], answers[1], log, filter_pipe[0], filter.empty() ? nullptr : &filter_program);
+		become_subject(argv, sandbox, requests[0], answers[1], log, filter_pipe[0], filter.empty() ? nullptr : &filter_program,
+		               files ? &*files : nullptr);
 	}
 	close(requests[0]);
 	close(answers[1]);
@@ -162,8 +182,25 @@ void Subject::stop() {
 	}
 }
 
+void Subject::refuse_after_hangs(Kind kind) const {
+	const double limit = sandbox.limits().request_seconds;
+	std::string hung;
+	for (Kind k : hangs.kinds) hung += (hung.empty() ? "" : ", ") + std::string(protocol::kind_functions(k));
+	if (std::find(hangs.kinds.begin(), hangs.kinds.end(), kind) != hangs.kinds.end()) {
+		throw Subject_Failure(std::string("Fix ") + protocol::kind_functions(kind) + " first: it did not finish in " +
+		                      seconds(limit) + " in an earlier test case, so this one was not run (request " +
+		                      protocol::kind_name(kind) + ").");
+	}
+	if (hangs.seconds >= 2.0 * limit) {
+		throw Subject_Failure("Fix " + hung + " first: your code did not finish in " + seconds(limit) +
+		                      " in earlier test cases, so the test cases after them are not run (request " +
+		                      protocol::kind_name(kind) + ").");
+	}
+}
+
 std::string Subject::exchange(Kind kind, const std::string& payload) {
 	if (pid <= 0) throw Subject_Failure("judge: the subject is no longer running");
+	refuse_after_hangs(kind);
 	uint32_t number = ++sequence;
 	std::string message;
 	auto append = [&](const auto& value) { message.append(reinterpret_cast<const char*>(&value), sizeof value); };
@@ -176,9 +213,12 @@ std::string Subject::exchange(Kind kind, const std::string& payload) {
 
 	auto request_deadline = std::min(deadline, Clock::now() + std::chrono::duration_cast<Clock::duration>(
 	                                                                std::chrono::duration<double>(sandbox.limits().request_seconds)));
+	const Clock::time_point asked = Clock::now();
 	auto time_is_up = [&]() {
 		timed_out = true;
 		timeout_kind = request_deadline == deadline ? "test case" : "request";
+		if (std::find(hangs.kinds.begin(), hangs.kinds.end(), kind) == hangs.kinds.end()) hangs.kinds.push_back(kind);
+		hangs.seconds += std::chrono::duration<double>(Clock::now() - asked).count();
 		fail(kind, "did not answer in time");
 	};
 	for (size_t sent = 0; sent < message.size();) {
@@ -212,8 +252,14 @@ std::string Subject::exchange(Kind kind, const std::string& payload) {
 		fail(kind, "wrote something that is not an answer to its answer channel");
 	}
 	if (answer_kind != uint32_t(kind) || answer_sequence != number) fail(kind, "answered out of turn");
-	std::string answer(length, '\0');
-	receive(answer.data(), answer.size());
+	// Read in pieces, never allocating more than has arrived: a declared length costs nothing.
+	std::string answer;
+	const size_t PIECE = size_t(1) << 20;
+	while (answer.size() < length) {
+		size_t at = answer.size();
+		answer.resize(at + std::min<uint64_t>(PIECE, length - at));
+		receive(answer.data() + at, answer.size() - at);
+	}
 	if (protocol::Status(status) == protocol::Status::THREW) {
 		std::string what = answer.substr(0, 2000);
 		if (what.find("bad_alloc") != std::string::npos) {
@@ -226,6 +272,10 @@ std::string Subject::exchange(Kind kind, const std::string& payload) {
 
 void Subject::fail(Kind kind, const std::string& what) {
 	std::string reason = end_reason();
+	// Running out of CPU time is a hang too: the same request would use it up again.
+	if (used_up_cpu && std::find(hangs.kinds.begin(), hangs.kinds.end(), kind) == hangs.kinds.end()) {
+		hangs.kinds.push_back(kind);
+	}
 	std::string output = printed();
 	bool sanitizer = output.find("Sanitizer") != std::string::npos || output.find("runtime error:") != std::string::npos;
 	if (sanitizer) reason = "the sanitizer stopped it at an error in the code (its report ends below)";
@@ -272,7 +322,10 @@ std::string Subject::end_reason() {
 	    WEXITSTATUS(status) < 128 + 65) {
 		signal = WEXITSTATUS(status) - 128;
 	}
-	if (signal == SIGXCPU) return "it used up its CPU time limit of " + std::to_string(limits.cpu_seconds) + " s";
+	if (signal == SIGXCPU) {
+		used_up_cpu = true;
+		return "it used up its CPU time limit of " + std::to_string(limits.cpu_seconds) + " s";
+	}
 	if (signal == SIGXFSZ) return "it wrote more than the file size limit of " + std::to_string(limits.file_bytes >> 20) + " MiB";
 	if (signal != 0) return "it was killed by " + signal_name(signal) + (signal == SIGKILL ? " (out of memory?)" : "");
 	if (WIFEXITED(status)) {

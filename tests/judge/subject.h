@@ -14,6 +14,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <sys/types.h>
 
@@ -21,13 +22,24 @@ struct Subject_Failure : std::runtime_error {
 	using std::runtime_error::runtime_error;
 };
 
+// The requests that ran out of time (or of CPU time) during one judge's run. A hang costs a whole
+// request's time limit, so a submission whose every function hangs would take many minutes: a later
+// request of a kind that already hung fails at once, and once hangs have taken two requests' time
+// limits, every later request does ("fix those first"), so that a task's grading spends at most that
+// on hangs.
+struct Hang_Record {
+	std::vector<protocol::Kind> kinds;
+	double seconds = 0.0; // spent waiting for requests that never answered
+};
+
 class Subject {
 public:
 	using Clock = std::chrono::steady_clock;
 
-	// Starts `program` in `sandbox`; `deadline`: when the test case's time is up. `save_requests`:
-	// a file to append every request to, for `subject --replay` (empty: none).
-	Subject(const std::string& program, const Sandbox& sandbox, Clock::time_point deadline,
+	// Starts `program` in `sandbox`; `deadline`: when the test case's time is up. `hangs`: the
+	// judge's record of the requests that ran out of time, consulted and kept up to date.
+	// `save_requests`: a file to append every request to, for `subject --replay` (empty: none).
+	Subject(const std::string& program, const Sandbox& sandbox, Clock::time_point deadline, Hang_Record& hangs,
 	        const std::string& save_requests = "");
 	~Subject();
 	Subject(const Subject&) = delete;
@@ -56,12 +68,17 @@ private:
 	std::string end_reason();
 	void stop();
 
+	// Throws if `kind` should fail at once because of earlier hangs (Hang_Record).
+	void refuse_after_hangs(protocol::Kind kind) const;
+
 	const Sandbox& sandbox;
 	Clock::time_point deadline;
+	Hang_Record& hangs;
 	std::string save_requests;
 	pid_t pid = -1;
 	int to_subject = -1, from_subject = -1, log = -1;
 	uint32_t sequence = 0;
 	bool timed_out = false;
+	bool used_up_cpu = false; // killed by its CPU time limit
 	std::string timeout_kind; // "request" or "test case"
 };

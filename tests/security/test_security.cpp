@@ -15,79 +15,146 @@
 #include <arpa/inet.h>
 #include <fcntl.h>
 #include <netinet/in.h>
+#include <sys/resource.h>
 #include <sys/socket.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <regex>
 #include <sstream>
 
 namespace fs = std::filesystem;
 
 namespace {
 
-const std::map<int, std::string> TASK_FILES{{1, "task1_camera.cpp"}, {3, "task3_bvh.cpp"},
-                                            {7, "task7_env_light.cpp"}};
+const std::map<int, std::string> TASK_FILES{
+	{1, "task1_camera.cpp"},    {2, "task2_shapes.cpp"},          {3, "task3_bvh.cpp"},      {4, "task4_path.cpp"},
+	{5, "task5_materials.cpp"}, {6, "task6_direct_lighting.cpp"}, {7, "task7_env_light.cpp"}};
 
 std::string read_file(const fs::path& path) {
 	std::ifstream in(path, std::ios::binary);
 	return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
+// A value of the grading kit (build/grading/kit.env: NAME='value' lines).
+std::string kit_value(const std::string& name) {
+	const char* kit = std::getenv("LAB_KIT");
+	REQUIRE(kit != nullptr);
+	std::ifstream in(kit);
+	for (std::string line; std::getline(in, line);) {
+		if (line.rfind(name + "='", 0) == 0 && line.size() > name.size() + 3) {
+			return line.substr(name.size() + 2, line.size() - name.size() - 3);
+		}
+	}
+	FAIL("grading/kit.env has no " << name);
+	return "";
+}
+
 struct Grade {
-	bool built = false;         // the file compiled and linked
+	bool built = false;           // the file compiled and linked
 	size_t test_cases = 0, passed = 0;
-	std::string messages;       // every failure message the judge recorded, or the build log
-	std::string report;         // the HTML page
+	std::string messages;         // every failure message the judge recorded, or the build log
+	std::string report;           // the HTML page
+	long largest_process_kib = 0; // the largest resident set of any process of the grading
+	double seconds = 0.0;         // the grading's wall time
 };
+
+// The text of hostile file `name` with its @NAME@ placeholders replaced.
+std::string hostile_source(const std::string& name, const fs::path& out,
+                           const std::map<std::string, std::string>& placeholders = {}) {
+	std::string source = read_file("tests/security/hostile/" + name);
+	REQUIRE_FALSE(source.empty());
+	std::map<std::string, std::string> all = placeholders;
+	all.emplace("@CORRECT_TASK1_IF@", read_file("tests/security/hostile/correct_task1_if.inc"));
+	all.emplace("@ROOT@", fs::current_path().string());
+	all.emplace("@OUT@", out.string());
+	for (const auto& [key, value] : all) {
+		for (size_t at = 0; (at = source.find(key, at)) != std::string::npos; at += value.size()) {
+			source.replace(at, key.size(), value);
+		}
+	}
+	return source;
+}
+
+// Runs `command` with /bin/sh: its exit status, and the largest resident set (KiB) of any process
+// of the command.
+int run(const std::string& command, long& largest_kib) {
+	pid_t child = fork();
+	if (child == 0) {
+		execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+		_exit(127);
+	}
+	int status = 0;
+	rusage usage{};
+	wait4(child, &status, 0, &usage);
+	largest_kib = usage.ru_maxrss;
+	return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+// Grades a fresh submission of the given task files (task number -> text) in `dir` with the grading
+// kit, as ./lab grade-submission does, and returns the result of each task it graded.
+std::map<int, Grade> grade_files(const Temp_Dir& dir, const std::map<int, std::string>& files,
+                                 const std::string& options) {
+	fs::path submission = dir.path() / "submission", out = dir.path() / "out";
+	fs::create_directories(submission);
+	for (const auto& [task, text] : files) std::ofstream(submission / TASK_FILES.at(task)) << text;
+	const char* kit = std::getenv("LAB_KIT");
+	REQUIRE(kit != nullptr);
+	// LAB_SANDBOX=process-limits (the suite's other modes): grade as where bubblewrap cannot run.
+	std::string allow = std::getenv("LAB_SANDBOX") ? " --allow-unsandboxed" : "";
+	std::string command = "KIT='" + std::string(kit) + "' tools/grade-submission '" + submission.string() +
+	                      "' --out '" + out.string() + "' " + options + allow + " > '" + dir.file("grading.log") +
+	                      "' 2>&1";
+	long largest_kib = 0;
+	auto started = std::chrono::steady_clock::now();
+	int status = run(command, largest_kib);
+	double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+	INFO(read_file(dir.file("grading.log")));
+	REQUIRE(status == 0);
+
+	std::map<int, Grade> grades;
+	for (int task = 1; task <= 7; task++) {
+		std::string name = "task" + std::to_string(task);
+		bool not_built = fs::exists(out / (name + ".build.log"));
+		if (!not_built && !fs::exists(out / (name + ".json"))) continue; // not graded
+		Grade& grade = grades[task];
+		grade.largest_process_kib = largest_kib;
+		grade.seconds = seconds;
+		grade.report = read_file(out / "index.html");
+		if (not_built) {
+			grade.messages = read_file(out / (name + ".build.log"));
+			continue;
+		}
+		grade.built = true;
+		nlohmann::json record = nlohmann::json::parse(read_file(out / (name + ".json")));
+		for (const auto& test_case : record.at("test_cases")) {
+			grade.test_cases++;
+			grade.passed += test_case.at("passed").get<bool>();
+			for (const auto& failure : test_case.at("failures")) {
+				grade.messages += failure.value("expansion", "") + "\n";
+				for (const auto& message : failure.at("messages")) grade.messages += message.get<std::string>() + "\n";
+			}
+		}
+		// The judge ran every one of its test cases.
+		CHECK(grade.test_cases == record.at("expected_test_cases").size());
+	}
+	return grades;
+}
 
 // Grades `hostile` (with @NAME@ placeholders replaced) as the task's file of a fresh submission.
 Grade grade(const std::string& hostile, int task, const std::map<std::string, std::string>& placeholders = {},
             const std::string& options = "") {
 	Temp_Dir dir;
-	fs::path submission = dir.path() / "submission", out = dir.path() / "out";
-	fs::create_directories(submission);
-	std::string source = read_file("tests/security/hostile/" + hostile);
-	REQUIRE_FALSE(source.empty());
-	std::map<std::string, std::string> all = placeholders;
-	all.emplace("@ROOT@", fs::current_path().string());
-	all.emplace("@OUT@", out.string());
-	for (const auto& [key, value] : all) {
-		for (size_t at; (at = source.find(key)) != std::string::npos;) source.replace(at, key.size(), value);
-	}
-	std::ofstream(submission / TASK_FILES.at(task)) << source;
-	const char* kit = std::getenv("LAB_KIT");
-	REQUIRE(kit != nullptr);
-	std::string command = "KIT='" + std::string(kit) + "' tools/grade-submission '" + submission.string() +
-	                      "' --out '" + out.string() + "' --tasks " + std::to_string(task) + " " + options +
-	                      " > '" + dir.file("grading.log") + "' 2>&1";
-	int status = std::system(command.c_str());
-	INFO(read_file(dir.file("grading.log")));
-	REQUIRE(status == 0);
-
-	Grade grade;
-	std::string name = "task" + std::to_string(task);
-	grade.report = read_file(out / "index.html");
-	if (fs::exists(out / (name + ".build.log"))) {
-		grade.messages = read_file(out / (name + ".build.log"));
-		return grade;
-	}
-	grade.built = true;
-	nlohmann::json record = nlohmann::json::parse(read_file(out / (name + ".json")));
-	for (const auto& test_case : record.at("test_cases")) {
-		grade.test_cases++;
-		grade.passed += test_case.at("passed").get<bool>();
-		for (const auto& failure : test_case.at("failures")) {
-			grade.messages += failure.value("expansion", "") + "\n";
-			for (const auto& message : failure.at("messages")) grade.messages += message.get<std::string>() + "\n";
-		}
-	}
-	// The judge ran every one of its test cases.
-	CHECK(grade.test_cases == record.at("expected_test_cases").size());
-	return grade;
+	std::string source = hostile_source(hostile, dir.path() / "out", placeholders);
+	std::map<int, Grade> grades = grade_files(dir, {{task, source}}, "--tasks " + std::to_string(task) + " " + options);
+	REQUIRE(grades.count(task) == 1);
+	return grades[task];
 }
 
 // The hostile file earned nothing: it did not build, or every test case of its task failed; and
@@ -203,4 +270,152 @@ TEST_CASE("answers special-cased for the public inputs earn nothing under a grad
 	Grade in_public = grade("task1_public_seed_only.cpp", 1);
 	CHECK(in_public.passed > 0);
 	require_nothing_earned(grade("task1_public_seed_only.cpp", 1, {}, "--seed 777"), "generate_ray");
+}
+
+TEST_CASE("a task file that names a library for the linker (.deplibs) earns nothing", "[security]") {
+	// It names the grading kit's own compiled reference of task 3, which lld would link in.
+	std::string reference = kit_value("LAB_REFERENCE_OBJECTS_3");
+	REQUIRE(fs::exists(reference));
+	Grade named = grade("task3_dependent_library.cpp", 3, {{"@REFERENCE_TASK3@", reference}});
+	CHECK_FALSE(named.built);
+	require_nothing_earned(named, ".deplibs");
+}
+
+TEST_CASE("a task file that has the assembler read the reference (.incbin) earns nothing", "[security]") {
+	Grade included = grade("task3_incbin_reference.cpp", 3);
+	CHECK_FALSE(included.built);
+	require_nothing_earned(included, "reference/task3_bvh.cpp");
+}
+
+// The task1_if_* files are task 1 done right when their attack works (correct_task1_if.inc).
+TEST_CASE("a task1_if_* file whose attack works earns full marks", "[security]") {
+	// The control: without it, "earns nothing" below would prove nothing about the attacks.
+	Temp_Dir dir;
+	std::string always = "bool attack_worked() { return true; }\n" +
+	                     read_file("tests/security/hostile/correct_task1_if.inc");
+	Grade graded = grade_files(dir, {{1, always}}, "--tasks 1")[1];
+	CHECK(graded.built);
+	CHECK(graded.test_cases > 0);
+	CHECK(graded.passed == graded.test_cases);
+}
+
+TEST_CASE("writing the judge's memory through /proc earns nothing", "[security]") {
+	require_nothing_earned(grade("task1_if_judge_memory_writable.cpp", 1), "generate_ray");
+}
+
+TEST_CASE("writing into the grader's records earns nothing", "[security]") {
+	require_nothing_earned(grade("task1_if_records_writable.cpp", 1), "generate_ray");
+}
+
+TEST_CASE("opening a judge that later submissions use for writing earns nothing", "[security]") {
+	std::string judge = kit_value("LAB_JUDGE_2");
+	std::string before = sha256_of_file(judge);
+	require_nothing_earned(grade("task1_if_judges_writable.cpp", 1, {{"@JUDGE2@", judge}}), "generate_ray");
+	CHECK(sha256_of_file(judge) == before);
+}
+
+TEST_CASE("reading the grading seed's file earns nothing", "[security]") {
+	Temp_Dir dir;
+	std::string seed = dir.file("seed");
+	std::ofstream(seed) << "777\n";
+	fs::permissions(seed, fs::perms::owner_read | fs::perms::owner_write); // as ./lab autograder writes it
+	require_nothing_earned(grade("task1_if_seed_readable.cpp", 1, {{"@SEED_FILE@", seed}}, "--seed @" + seed),
+	                       "generate_ray");
+}
+
+TEST_CASE("the grader's environment tells student code nothing", "[security]") {
+	require_nothing_earned(grade("task1_if_environment.cpp", 1), "generate_ray");
+}
+
+TEST_CASE("memory outside the memory limit (memfd, /dev/shm) earns nothing", "[security]") {
+	require_nothing_earned(grade("task1_if_memory_outside_limits.cpp", 1), "generate_ray");
+}
+
+TEST_CASE("burning CPU earns nothing and is stopped by the CPU limit, which the report names", "[security]") {
+	require_nothing_earned(grade("task1_cpu_hog.cpp", 1, {}, "--time-limit 20 --cpu-limit 1"), "CPU time limit");
+}
+
+TEST_CASE("an answer that declares a huge payload and sends nothing costs the judge no memory", "[security]") {
+	Grade declared = grade("task1_declared_huge_answer.cpp", 1, {}, "--time-limit 2");
+	require_nothing_earned(declared, "time limit");
+	INFO("the largest process of the grading held " << declared.largest_process_kib << " KiB");
+	CHECK(declared.largest_process_kib < 512 * 1024); // far below the 1 GiB declared
+}
+
+TEST_CASE("a file whose preprocessing never ends is stopped, and says so", "[security]") {
+	Grade bomb = grade("task1_macro_bomb.cpp", 1);
+	CHECK_FALSE(bomb.built);
+	CHECK_THAT(bomb.messages, Catch::Contains("memory") || Catch::Contains("did not finish"));
+}
+
+namespace {
+// The shipped stub of task n with an endless loop at the start of every function it defines.
+std::string hanging_stub(int n) {
+	std::istringstream stub(read_file("student/" + TASK_FILES.at(n)));
+	std::string hanging = "namespace { volatile bool lab_forever = true; }\n";
+	const std::regex definition(R"(^[A-Za-z].*\)( const)? \{$)");
+	size_t loops = 0;
+	for (std::string line; std::getline(stub, line);) {
+		hanging += line;
+		if (std::regex_match(line, definition)) hanging += " while (lab_forever) {}", loops++;
+		hanging += "\n";
+	}
+	REQUIRE(loops >= 2);
+	return hanging;
+}
+} // namespace
+
+TEST_CASE("a submission whose every function hangs gets 0 on every task, at most two hangs a task later",
+          "[security]") {
+	Temp_Dir dir;
+	std::map<int, std::string> files;
+	for (int n = 1; n <= 7; n++) files[n] = hanging_stub(n);
+	// Seconds per request: 1 in ./lab test; ./lab acceptance runs this with the default, 30
+	// (LAB_HANG_LIMIT, test security_hangs_default_limit).
+	const char* chosen = std::getenv("LAB_HANG_LIMIT");
+	const double limit = chosen ? std::stod(chosen) : 1.0;
+	std::map<int, Grade> grades = grade_files(dir, files, "--time-limit " + std::to_string(limit));
+	REQUIRE(grades.size() == 7);
+	for (const auto& [task, graded] : grades) {
+		INFO("task " << task << ": " << graded.messages.substr(0, 2000));
+		CHECK(graded.built);
+		CHECK(graded.test_cases > 0);
+		CHECK(graded.passed == 0);
+		CHECK_THAT(graded.messages, Catch::Contains("first: it did not finish") ||
+		                                Catch::Contains("first: your code did not finish"));
+	}
+	// A task waits for at most two hung requests (tests/judge/subject.h, Hang_Record); compiling,
+	// starting subjects and the judge's own work take the rest, a few seconds a task. With the
+	// default limit that is 7 x (60 + 8) s: within Gradescope's 10 minutes.
+	double seconds = grades[1].seconds;
+	INFO("graded in " << seconds << " s");
+	CHECK(seconds <= 7 * (2 * limit + 8));
+	CHECK(seconds <= 600);
+}
+
+TEST_CASE("a file that keeps the compiler busy is stopped by the time limit, and says so", "[security]") {
+	setenv("LAB_STEP_SECONDS", "2", 1); // tools/sandboxed's limit on a compile (default 60 s)
+	Grade busy = grade("task1_endless_constexpr.cpp", 1);
+	unsetenv("LAB_STEP_SECONDS");
+	CHECK_FALSE(busy.built);
+	CHECK_THAT(busy.messages, Catch::Contains("did not finish in 2 s"));
+}
+
+TEST_CASE("a task-4 file whose shade() is the framework's NEE integrator earns nothing for shade()", "[security]") {
+	// The integrator is not linked where task 4 is graded (tests/security/test_subject_symbols.sh).
+	// What the file's honest Lambertian BSDF earns, with the stub's shade(), is the most it may earn.
+	Temp_Dir dir;
+	std::string source = hostile_source("task4_shade_by_nee_integrator.cpp", dir.path() / "out");
+	std::string by_nee = "return trace_nee(*this, rng, camera_ray);";
+	size_t at = source.find(by_nee);
+	REQUIRE(at != std::string::npos);
+	std::string honest = source;
+	honest.replace(at, by_nee.size(), "return eye_light(ray, hit);");
+	Grade bsdf_only = grade_files(dir, {{4, honest}}, "--tasks 4")[4];
+	Grade hostile = grade("task4_shade_by_nee_integrator.cpp", 4);
+	INFO("the judge's messages:\n" << hostile.messages.substr(0, 3000));
+	CHECK(hostile.built);
+	CHECK(bsdf_only.passed > 0);
+	CHECK(hostile.passed <= bsdf_only.passed);
+	CHECK_THAT(hostile.messages, Catch::Contains("not part of a program built with your task 4"));
 }

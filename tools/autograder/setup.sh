@@ -4,6 +4,7 @@
 # reference's subjects' parts) in /autograder/source/build.
 set -euo pipefail
 cd "$(dirname "$0")"
+[ ! -f grading/seed ] || chmod 600 grading/seed # the grader's alone, whoever the submission runs as
 ./lab setup
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build build --parallel "$(nproc)" --target grading_kit
