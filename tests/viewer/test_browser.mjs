@@ -9,7 +9,7 @@
 //   3. switch to the z-map, which is pale (the same code on both sides passes the z-test);
 //   4. show a compile error of an edited student file with its file and line, then, once the file
 //      compiles, the new picture (here task 4 returning emission only: a darker picture);
-//   5. log no uncaught error.
+//   5. save the picture into the output folder, and log no uncaught error.
 // It prints the timings of the issue's "Measure" list (not checked: timed runs, not tests) and
 // keeps screenshots in --out (README and handout pictures are copied from there).
 import {spawn, execFileSync} from "node:child_process";
@@ -126,6 +126,11 @@ try {
 	const firstRow = await page.textContent("#path-table tbody tr:first-child");
 	check(firstRow.includes("white (object"), `the path table's first row names the floor's material: ${firstRow.slice(0, 120)}`);
 	await page.screenshot({path: path.join(args.out, "viewer_side_by_side.png"), fullPage: false});
+	await page.click("#save");
+	await page.waitForFunction(() => document.getElementById("saved").textContent !== "", null, {timeout: 10000});
+	const saved = path.join(args.out, "snapshots", "cornell_box_view_student.png");
+	check(fs.existsSync(saved) && (await page.textContent("#saved")) === `wrote ${saved}`,
+		`"save PNG" writes the student's picture into the output folder: ${await page.textContent("#saved")}`);
 
 	// 3. The z-map.
 	await page.selectOption("#layout", "z");

@@ -371,6 +371,15 @@ function wire() {
 	$("wipe").oninput = drawWipe;
 	$("pause").onclick = async () => showState(await post(lab.state && lab.state.paused ? "api/resume" : "api/pause"));
 	$("restart").onclick = () => restart({seed: $("seed").value});
+	$("save").onclick = async () => {
+		const side = lab.state && lab.state.compare ? "student" : "reference";
+		const name = `${lab.state.scene.replace(/\.json$/, "")}_view_${side}.png`;
+		try {
+			$("saved").textContent = `wrote ${(await post("api/snapshot", {side, name, exposure: $("exposure").value})).wrote}`;
+		} catch (error) {
+			$("saved").textContent = error.message;
+		}
+	};
 	$("view").onchange = () => restart({view: $("view").value});
 	$("scene").onchange = () => restart({scene: $("scene").value});
 	for (const side of ["student", "reference", "wipe", "z"]) $(`${side}-canvas`).onclick = (e) => followPixel(side, e);
