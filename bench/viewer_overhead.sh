@@ -11,12 +11,14 @@
 # The CPU time is the fairer measure on a shared machine: other programs' load lengthens the wall
 # time of either run by chance, but not its CPU time.
 #
-# usage: bench/viewer_overhead.sh BUILD_DIR [SCENE] [SPP] [RUNS]
+# usage: bench/viewer_overhead.sh BUILD_DIR [SCENE] [SPP] [RUNS] [THREADS]
+# (THREADS: render threads, default 0 = all cores; 1 makes the CPU times steadier on a busy machine)
 set -euo pipefail
 build=$1
 scene=${2:-scenes/cornell_box.json}
 spp=${3:-128}
 runs=${4:-3}
+threads=${5:-0}
 renderer=$build/tasks/pathtracer_reference
 viewer=$build/framework/viewer/lab_viewer
 tmp=$(mktemp -d)
@@ -26,7 +28,7 @@ now() { date +%s.%N; }
 
 # plain: prints "WALL CPU" in seconds.
 plain() {
-	/usr/bin/time -f "%e %U %S" -o "$tmp/plain.time" "$renderer" "$scene" --spp "$spp" --out "$tmp/plain.png" --quiet
+	/usr/bin/time -f "%e %U %S" -o "$tmp/plain.time" "$renderer" "$scene" --spp "$spp" --threads "$threads" --out "$tmp/plain.png" --quiet
 	awk '{ print $1, $2 + $3 }' "$tmp/plain.time"
 }
 
@@ -36,7 +38,7 @@ with_viewer() {
 	rm -f "$tmp/viewer.out" # (else the last run's URL may be read before the new viewer's)
 	start=$(now)
 	/usr/bin/time -f "%e %U %S" -o "$tmp/viewer.time" "$viewer" "$scene" --reference-renderer "$renderer" \
-		--reference-only --port 0 --max-spp "$spp" --out-dir "$tmp" >"$tmp/viewer.out" 2>&1 &
+		--reference-only --port 0 --max-spp "$spp" --threads "$threads" --out-dir "$tmp" >"$tmp/viewer.out" 2>&1 &
 	time_pid=$!
 	until url=$(grep -o 'http://[^ ]*' "$tmp/viewer.out" 2>/dev/null); do sleep 0.01; done
 	base=${url%/?token=*}

@@ -6,6 +6,7 @@
 #include "follow_pixel.h"
 #include "image_io.h"
 #include "output_file.h"
+#include "progressive_render.h"
 #include "render.h"
 #include "scene_loader.h"
 #include "terminal.h"
@@ -14,7 +15,6 @@
 #include <chrono>
 #include <cstdio>
 #include <ostream>
-#include <thread>
 
 namespace {
 
@@ -129,37 +129,21 @@ void render_and_write(const Scene& scene, const Cli_Options& options, Run_Times 
 }
 
 // --stream (./lab view): the render in batches of samples, the film written after each batch
-// (film_stream.h). Batches grow or shrink towards STREAM_BATCH_SECONDS, so that the page updates
-// several times a second without the frames' cost showing in the render's speed; a frame is
-// written from a copy of the film on a thread of its own while the next batch renders. Samples
-// are added in index order (render_samples), so the film after N samples is render()'s with N.
+// (film_stream.h) by render_progressively, which keeps every thread rendering in between; batches
+// of about STREAM_BATCH_SECONDS, so that the page updates several times a second. The film after N
+// samples is render()'s with N, bit for bit.
 void stream(const Scene& scene, const Cli_Options& options, std::ostream& out) {
 	constexpr double STREAM_BATCH_SECONDS = 0.25;
 	Pathtracer pathtracer(scene, scene.settings, options.view);
-	const Render_Settings& settings = pathtracer.settings;
-	Render_Options render_options;
-	render_options.threads = options.threads;
-	Film film(settings.width, settings.height);
-	uint32_t done = 0, batch = 1;
-	double seconds = 0.0;
-	std::thread writer;
-	auto written = [&] { // waits for the last frame; false if the viewer went away
-		if (writer.joinable()) writer.join();
-		return bool(out);
+	Progressive_Options progressive;
+	progressive.render.threads = options.threads;
+	progressive.samples = pathtracer.settings.samples;
+	progressive.batch_seconds = STREAM_BATCH_SECONDS;
+	progressive.frame = [&](const Film& film, uint32_t samples, double seconds) {
+		write_frame(out, film, samples, seconds);
+		return bool(out); // false: the viewer went away
 	};
-	while (done < settings.samples) {
-		uint32_t end = done + std::min(batch, settings.samples - done);
-		auto start = std::chrono::steady_clock::now();
-		render_samples(pathtracer, film, done, end, render_options);
-		double batch_seconds = seconds_since(start);
-		seconds += batch_seconds;
-		done = end;
-		if (!written()) break;
-		writer = std::thread([&out, frame = film, done, seconds] { write_frame(out, frame, done, seconds); });
-		if (batch_seconds < 0.5 * STREAM_BATCH_SECONDS && batch < (1u << 16)) batch *= 2;
-		if (batch_seconds > 2.0 * STREAM_BATCH_SECONDS && batch > 1) batch /= 2;
-	}
-	written();
+	render_progressively(pathtracer, progressive);
 }
 
 // --follow-pixel: the same paths the renderer takes for that pixel, printed ray by ray.

@@ -1,4 +1,5 @@
 #include "render.h"
+#include "render_tiles.h"
 
 #include <algorithm>
 #include <atomic>
@@ -9,11 +10,6 @@
 #include <thread>
 #include <vector>
 
-namespace {
-struct Tile {
-	uint32_t x0, y0, x1, y1;
-};
-
 std::vector<Tile> make_tiles(uint32_t w, uint32_t h, uint32_t size) {
 	std::vector<Tile> tiles;
 	for (uint32_t y = 0; y < h; y += size) {
@@ -22,14 +18,15 @@ std::vector<Tile> make_tiles(uint32_t w, uint32_t h, uint32_t size) {
 	return tiles;
 }
 
+namespace {
 // The first sample index at or after `first` in the pass's share (s % passes == pass - 1).
 uint32_t first_of_pass(uint32_t first, const Render_Options& options) {
 	uint32_t offset = options.pass - 1;
 	if (first <= offset) return offset;
 	return first + (options.passes - (first - offset) % options.passes) % options.passes;
 }
+} // namespace
 
-// Samples [first, end) of every pixel of the tile.
 void render_tile(const Pathtracer& pt, const Render_Settings& settings, const Render_Options& options, const Tile& tile,
                  uint32_t first, uint32_t end, Film& film) {
 	for (uint32_t y = tile.y0; y < tile.y1; y++) {
@@ -44,9 +41,6 @@ void render_tile(const Pathtracer& pt, const Render_Settings& settings, const Re
 	}
 }
 
-// options.tile_size, or smaller for a small film: at least TILES_PER_THREAD tiles for each thread,
-// so that the threads finish within a small tile of each other, and none is left working alone
-// at the end. The image does not depend on it.
 uint32_t tile_size(const Render_Settings& settings, const Render_Options& options, uint32_t threads) {
 	constexpr uint64_t TILES_PER_THREAD = 16;
 	constexpr uint32_t SMALLEST = 4;
@@ -55,7 +49,6 @@ uint32_t tile_size(const Render_Settings& settings, const Render_Options& option
 	while (size / 2 >= SMALLEST && tiles(size) < TILES_PER_THREAD * threads) size /= 2;
 	return size;
 }
-} // namespace
 
 Film render(const Pathtracer& pathtracer, const Render_Options& options) {
 	Film film(pathtracer.settings.width, pathtracer.settings.height);

@@ -165,6 +165,7 @@ void Viewer_Server::add_routes() {
 		res.set_header("X-Width", std::to_string(image.width));
 		res.set_header("X-Height", std::to_string(image.height));
 		res.set_header("X-Samples", std::to_string(image.samples));
+		res.set_header("X-Generation", std::to_string(image.generation));
 		res.set_header("Cache-Control", "no-store");
 		res.set_content(std::move(image.bytes), "application/octet-stream");
 	});

@@ -138,6 +138,7 @@ void Viewer_Session::on_frame(Side s, uint64_t generation, std::shared_ptr<const
 		rs.frame = frame;
 		event = frame_summary(*frame);
 		event["side"] = side_name(s);
+		event["generation"] = generation;
 	}
 	hub.publish("frame", event.dump());
 	if (config.compare) {
@@ -311,10 +312,12 @@ void Viewer_Session::publish_state() {
 Viewer_Session::Image Viewer_Session::image(Side s, Layer layer) const {
 	std::shared_ptr<const Film_Frame> frame;
 	std::shared_ptr<const Comparison> compared;
+	uint64_t generation;
 	{
 		std::lock_guard<std::mutex> lock(mutex);
 		if (s == Side::student && !config.compare) throw Request_Error(404, "this viewer shows the reference alone (./lab view --reference)");
 		frame = side(s).frame;
+		generation = side(s).generation;
 		compared = comparison;
 	}
 	if (layer == Layer::z) {
@@ -322,7 +325,7 @@ Viewer_Session::Image Viewer_Session::image(Side s, Layer layer) const {
 		frame = s == Side::student ? compared->student : compared->reference;
 	}
 	if (!frame) throw Request_Error(409, std::string("no picture of the ") + side_name(s) + " side yet");
-	Image image{frame->width(), frame->height(), frame->samples, {}};
+	Image image{frame->width(), frame->height(), frame->samples, generation, {}};
 	switch (layer) {
 	case Layer::mean: image.bytes = float_bytes(frame->estimate.mean); break;
 	case Layer::variance: image.bytes = float_bytes(frame->estimate.variance); break;

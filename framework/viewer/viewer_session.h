@@ -75,6 +75,7 @@ public:
 	// first frame.
 	struct Image {
 		uint32_t width = 0, height = 0, samples = 0;
+		uint64_t generation = 0; // which render of the side (it restarts after an edit, a new seed...)
 		std::string bytes;
 	};
 	Image image(Side side, Layer layer) const;

@@ -1,6 +1,7 @@
 // Rendering (framework/render.h) and the film (framework/film.h): a render is a pure function of
 // (scene, settings, seed), whatever the threads and tile order; pixels keep an exact mean and
 // variance; non-finite samples are counted, never averaged.
+#include "progressive_render.h"
 #include "render.h"
 
 #include <catch2/catch.hpp>
@@ -236,4 +237,56 @@ TEST_CASE("render_samples refuses a film of another size than the settings'", "[
 	Pathtracer pathtracer(scene, scene.settings, View::path);
 	Film wrong(scene.settings.width + 1, scene.settings.height);
 	CHECK_THROWS_WITH(render_samples(pathtracer, wrong, 0, 1), Catch::Contains("the film is 25 x 18"));
+}
+
+TEST_CASE("A progressive render hands on, batch after batch, render()'s film with that many samples", "[render]") {
+	// ./lab view's renderer (--stream): no thread waits for the others between batches, yet every
+	// frame must be exactly the film of render() with the frame's samples.
+	Scene scene = sphere_scene();
+	Render_Settings settings = scene.settings;
+	settings.samples = 9;
+	settings.sampler = Sampler::sobol;
+	Pathtracer pathtracer(scene, settings, View::path);
+	for (uint32_t threads : {1u, 3u}) {
+		Progressive_Options options;
+		options.render.threads = threads;
+		options.render.tile_size = 4; // many tiles: tiles of one batch finish while others start the next
+		options.samples = settings.samples;
+		options.batch_seconds = 1e-9; // one sample per batch: the most frames
+		std::vector<uint32_t> counts;
+		options.frame = [&](const Film& film, uint32_t samples, double seconds) {
+			counts.push_back(samples);
+			Render_Settings partial = settings;
+			partial.samples = samples;
+			Film expected = render(Pathtracer(scene, partial, View::path));
+			for (size_t i = 0; i < film.pixels.size(); i++) {
+				INFO("frame of " << samples << " samples, pixel " << i << ", " << threads << " threads");
+				REQUIRE(film.pixels[i].count == samples);
+				REQUIRE(std::memcmp(&film.pixels[i].mean, &expected.pixels[i].mean, sizeof(glm::dvec3)) == 0);
+				REQUIRE(std::memcmp(&film.pixels[i].m2, &expected.pixels[i].m2, sizeof(glm::dvec3)) == 0);
+			}
+			CHECK(seconds >= 0.0);
+			return true;
+		};
+		render_progressively(pathtracer, options);
+		CHECK(counts == std::vector<uint32_t>{1, 2, 3, 4, 5, 6, 7, 8, 9}); // in order, each once
+	}
+}
+
+TEST_CASE("A progressive render stops when its frame handler says so", "[render]") {
+	Scene scene = sphere_scene();
+	Render_Settings settings = scene.settings;
+	settings.samples = 50;
+	Pathtracer pathtracer(scene, settings, View::path);
+	Progressive_Options options;
+	options.render.threads = 2;
+	options.samples = settings.samples;
+	options.batch_seconds = 1e-9;
+	std::vector<uint32_t> counts;
+	options.frame = [&](const Film&, uint32_t samples, double) {
+		counts.push_back(samples);
+		return samples < 3; // the viewer went away after the third frame
+	};
+	render_progressively(pathtracer, options);
+	CHECK(counts == std::vector<uint32_t>{1, 2, 3});
 }

@@ -101,13 +101,17 @@ async function fetchImage(side) {
 		if (response.ok) {
 			const width = Number(response.headers.get("X-Width")), height = Number(response.headers.get("X-Height"));
 			const samples = Number(response.headers.get("X-Samples"));
+			const generation = Number(response.headers.get("X-Generation"));
 			const mean = new Float32Array(await response.arrayBuffer());
+			const shown = lab.images[side];
+			// (frames come faster than pictures are fetched at first: the latest may be the one shown)
+			if (shown && shown.samples === samples && shown.generation === generation && !$("nan-map").checked) return;
 			let nonFinite = null;
 			if ($("nan-map").checked) {
 				const nan = await fetch(url("api/image", {side, layer: "non_finite"}));
 				if (nan.ok) nonFinite = new Uint8Array(await nan.arrayBuffer());
 			}
-			lab.images[side] = {width, height, samples, mean, nonFinite};
+			lab.images[side] = {width, height, samples, generation, mean, nonFinite};
 			lab.updates[side]++;
 			if (lab.firstPictureMs === null) lab.firstPictureMs = performance.now();
 			drawSide(side);
