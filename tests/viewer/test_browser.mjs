@@ -93,13 +93,18 @@ try {
 	await waitFor(() => window.labViewer.updates.student >= 1);
 	measured.first_picture_student_ms = Date.now() - opened; // after the student's renderer's build check
 	measured.first_picture_student_since_start_ms = Date.now() - started;
-	const pixels = () => lab(() => Array.from(document.getElementById("student-canvas").getContext("2d")
-		.getImageData(0, 0, 256, 256).data.filter((_, i) => i % 97 === 0)));
-	const updates = await lab(() => window.labViewer.updates.student);
-	const before = await pixels();
-	await waitFor((n) => window.labViewer.updates.student > n, updates);
-	const after = await pixels();
-	check(before.some((v, i) => v !== after[i]), "two successive updates of the student's picture differ");
+	// The picture drawn and its number, read at once (a picture may be drawn between two reads).
+	const picture = () => lab(() => ({
+		update: window.labViewer.updates.student,
+		samples: window.labViewer.images.student.samples,
+		pixels: Array.from(document.getElementById("student-canvas").getContext("2d").getImageData(0, 0, 256, 256).data
+			.filter((_, i) => i % 97 === 0)),
+	}));
+	const before = await picture();
+	await waitFor((n) => window.labViewer.updates.student > n, before.update);
+	const after = await picture();
+	check(before.pixels.some((v, i) => v !== after.pixels[i]),
+		`two successive updates of the student's picture differ (${before.samples} and ${after.samples} spp)`);
 	await waitFor(() => window.labViewer.comparison && window.labViewer.comparison.student_samples >= 4);
 	const early = await lab(() => window.labViewer.comparison);
 	const windowStart = {time: Date.now(), updates: await lab(() => window.labViewer.updates.student)};
