@@ -90,6 +90,7 @@ try {
 	// 1. Live convergence.
 	await waitFor(() => window.labViewer.updates.reference >= 1);
 	measured.first_picture_reference_ms = Date.now() - opened;
+	measured.first_picture_in_page_ms = Math.round(await lab(() => window.labViewer.firstPictureMs)); // since navigation began
 	await waitFor(() => window.labViewer.updates.student >= 1);
 	measured.first_picture_student_ms = Date.now() - opened; // after the student's renderer's build check
 	measured.first_picture_student_since_start_ms = Date.now() - started;

@@ -194,6 +194,7 @@ function showState(state) {
 	for (const [side, info] of Object.entries(state.sides)) {
 		$(`${side}-state`).textContent = info.state;
 		$(`${side}-message`).textContent = info.message; // why a renderer failed (a crash of task code)
+		if (info.frame && !lab.images[side]) fetchImage(side); // a page opened on a running render
 	}
 	if (state.build !== "none") $("build-state").textContent = `(build: ${state.build})`;
 	showComparison(state.comparison);
