@@ -8,8 +8,8 @@
 // reference (tests/support/film_statistics.h, student_furnaces.h), never from the student's film.
 // Where the estimator has zero variance the bound reduces to float rounding, FLOAT_SLACK. Russian
 // roulette keeps the expectation, so the same bounds hold with it (its noise is in the variance).
-// Each render's noise, summed over the film, is bounded by the reference's (noise_bound.h): noise
-// or fireflies fail every time, not by chance.
+// Each render may not be noisier than the reference's, pixel by pixel (the sign test,
+// paired_noise.h): noise or fireflies fail every time, not by chance.
 #include "film_statistics.h"
 #include "judge.h"
 #include "furnace_scenes.h"
@@ -61,7 +61,7 @@ bool check_noise(const Furnace_Render& render, const std::string& what) {
 
 } // namespace
 
-TEST_CASE("Furnace: a white diffuse sphere in a uniform environment renders the environment, 1, everywhere", "[fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
+TEST_CASE("Furnace: a white diffuse sphere in a uniform environment renders the environment, 1, everywhere", "[estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
 	// Albedo 1 and L_env = 1: whatever the path, light is neither created nor lost (anchors §4). A
 	// convex object never sees itself, so this holds for every max_depth >= 1.
 	std::optional<RNG> secret = secret_inputs("white furnace");
@@ -89,7 +89,7 @@ TEST_CASE("Furnace: a white diffuse sphere in a uniform environment renders the 
 }
 
 TEST_CASE("Furnace: a diffuse sphere of albedo rho under a uniform sky L renders rho * L for max_depth >= 1, "
-          "and black for max_depth 0", "[fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
+          "and black for max_depth 0", "[estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
 	// The sphere is convex: the first bounce sees only the sky, so its radiance is
 	// integral (rho / pi) L cos = rho * L whatever max_depth >= 1. With max_depth = 0 a camera ray
 	// may not scatter (pathtracer.h): the non-emitting sphere is black, the sky still L.
@@ -124,7 +124,7 @@ TEST_CASE("Furnace: a diffuse sphere of albedo rho under a uniform sky L renders
 	}
 }
 
-TEST_CASE("Furnace: inside an emitting diffuse sphere, max_depth D gives Le * (1 + rho + ... + rho^D)", "[fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
+TEST_CASE("Furnace: inside an emitting diffuse sphere, max_depth D gives Le * (1 + rho + ... + rho^D)", "[estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
 	// Every ray inside a closed sphere hits it again. Each hit emits Le and reflects rho of what
 	// arrives, so a path with at most D bounces carries Le * sum_{k=0..D} rho^k (anchors §4). An
 	// off-by-one in the depth test shifts the answer by a whole term, e.g. D = 1 gives
@@ -192,7 +192,7 @@ TEST_CASE("Furnace: a scene without emitters or environment renders exactly 0", 
 	}
 }
 
-TEST_CASE("Furnace far from the origin: new rays must leave their surface at any scale (dist_bounds offset)", "[fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
+TEST_CASE("Furnace far from the origin: new rays must leave their surface at any scale (dist_bounds offset)", "[estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
 	// The same diffuse sphere as above, moved to 10^4 from the origin. Float coordinates there are
 	// 10^-3 apart, so a hit point may lie that far inside the sphere: a new ray whose dist_bounds
 	// start at a fixed small distance (1e-4, say) hits its own surface again, an extra "bounce"

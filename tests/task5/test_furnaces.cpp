@@ -9,7 +9,7 @@
 // The only exceptions are paths the depth cap cuts while still inside the glass (value 0); see the
 // glass furnace below for how rare they are. Each comparison is a z-test with the standard error of
 // the judge's own render of the furnace with the reference (never the student's film) plus that
-// rounding allowance, and each render's noise is bounded by the reference's (noise_bound.h),
+// rounding allowance, and each render may not be noisier than the reference's (paired_noise.h),
 // Šidák-corrected over the file's CHECKS checks.
 #include "directions.h"
 #include "film_statistics.h"
@@ -45,7 +45,7 @@ void check_noise(const Furnace_Render& render, const std::string& what) {
 
 } // namespace
 
-TEST_CASE("Glass furnace: a clear glass sphere in a uniform environment L = 1 renders 1 (energy is conserved)", "[uses:Glass::scatter]") {
+TEST_CASE("Glass furnace: a clear glass sphere in a uniform environment L = 1 renders 1 (energy is conserved)", "[estimate][uses:Glass::scatter]") {
 	// Every path through clear glass ends in the environment with weight 1, unless the depth cap
 	// stops it inside. Inside a sphere the internal angle equals the refracted one, so there is no
 	// total internal reflection and a path is still inside after D scattering events with
@@ -81,7 +81,7 @@ TEST_CASE("Glass furnace: a clear glass sphere in a uniform environment L = 1 re
 }
 
 TEST_CASE("Glass, seen from inside: the lab does not scale radiance by eta^2, so the view from inside a glass "
-          "sphere under L = 1 is 1, not 2.25", "[uses:Glass::scatter]") {
+          "sphere under L = 1 is 1, not 2.25", "[estimate][uses:Glass::scatter]") {
 	// material.h: transmitted radiance is not multiplied by eta^2. A renderer that does (radiance
 	// "compresses" into the denser medium) would show 1.5^2 = 2.25 here, while the furnace above
 	// cannot tell (the factors cancel on the way in and out). The camera is 3 units from the centre
@@ -110,7 +110,7 @@ TEST_CASE("Glass, seen from inside: the lab does not scale radiance by eta^2, so
 	check_noise(render, "the view from inside a glass sphere");
 }
 
-TEST_CASE("Mirror furnace: a mirror sphere of reflectance R in a uniform environment L = 1 renders R", "[uses:Mirror::scatter]") {
+TEST_CASE("Mirror furnace: a mirror sphere of reflectance R in a uniform environment L = 1 renders R", "[estimate][uses:Mirror::scatter]") {
 	// A convex mirror reflects every camera ray once, straight into the environment: R * L.
 	std::optional<RNG> secret = secret_inputs("mirror furnace");
 	Spectrum reflectance{0.9f, 0.5f, 0.2f};

@@ -23,7 +23,7 @@ namespace env_test {
 // test_importance.cpp); the estimates: z-tests of the constant map's three channels
 // (test_importance.cpp), two one-texel maps (test_bright_texel.cpp), and three channels of three
 // groups of pixels in test_render.cpp (sky and sphere under Env_Map, sphere under Env_Constant),
-// and the bound on the noise of each of those five estimates (noise_bound.h). z-tests take their
+// and the noise of each of those five estimates (paired_noise.h). z-tests take their
 // standard error from the reference's estimator (reference_weights below, the judge's render in
 // test_render.cpp), never from the student's samples.
 constexpr double ALPHA = 0.01;
@@ -101,9 +101,9 @@ inline Env_Samples student_env_samples(const HDR_Image& image, bool importance_s
 // The weights L / pdf per channel of n importance samples of the reference's Env_Map(image) (the
 // judge links the reference of every task), from the points of `seed` but another stream than the
 // student's; a sample of pdf 0 weighs 0, as a renderer skips it. As many samples as the student's
-// are enough: the reference's variance is then off by sqrt((κ - 1) / n) relative (κ the weights'
-// kurtosis), under 2 % here, so the standard error by under 1 %; the noise bound counts the
-// reference's own sampling error exactly.
+// are enough: the reference's variance is then off by sqrt((κ - 1) / n) relative, κ the weights'
+// kurtosis (measured over 2e5 samples: 36 for the constant map, 27 and 14 for the bright texels),
+// 1.3 % at most for n = 2e5, so the standard error by under 0.7 %.
 inline std::array<std::vector<double>, 3> reference_weights(const HDR_Image& image, uint64_t seed, size_t n) {
 	Env_Map map(image, true);
 	std::array<std::vector<double>, 3> weights;

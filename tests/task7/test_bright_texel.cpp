@@ -147,7 +147,7 @@ TEST_CASE("one bright texel: the pdf is positive wherever its radiance is, and L
 	}
 }
 
-TEST_CASE("one bright texel: the weights L / pdf average the integral of its radiance", "[task7][bright-texel][statistical][uses:Env_Map::evaluate][uses:Image::sample][uses:Image::pdf]") {
+TEST_CASE("one bright texel: the weights L / pdf average the integral of its radiance", "[estimate][task7][bright-texel][statistical][uses:Env_Map::evaluate][uses:Image::sample][uses:Image::pdf]") {
 	// E[L / pdf] over importance samples = the integral of L over the directions where pdf > 0: all
 	// of it only if the pdf covers the whole bilinear footprint (two of the grader's z-tests).
 	for (const Bright_Texel& t : cases()) {

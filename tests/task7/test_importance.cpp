@@ -172,7 +172,7 @@ TEST_CASE("Image::sample draws directions with the density Image::pdf (chi-squar
 	}
 }
 
-TEST_CASE("a constant map: the weights L / pdf average 4 pi L and stay below twice that", "[task7][importance][statistical][uses:Image::sample][uses:Image::pdf]") {
+TEST_CASE("a constant map: the weights L / pdf average 4 pi L and stay below twice that", "[estimate][task7][importance][statistical][uses:Image::sample][uses:Image::pdf]") {
 	// E[L / pdf] = integral of L over the sphere = 4 pi L for any correct pdf (three of the grader's
 	// z-tests). A weight is 4 pi L sin(theta) / sin(theta_row) up to the table's normalization;
 	// sin(theta) / sin(theta_row) < 2 in the rows at the poles (sin(2x) / sin(x) = 2 cos(x) with the
