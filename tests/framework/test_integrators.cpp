@@ -4,14 +4,14 @@
 // estimator (task 4 with task 6's mixture, lights chosen uniformly, independent samples).
 //
 // The z-tests need each image's variance of the mean (compare_estimators: both estimators are the
-// lab's own, so each image's variance counts, unlike a grader's comparison of a submission). With independent samples it is the film's
-// per-sample variance s^2 over n. With low-discrepancy samples it is not: a pixel's samples are
-// spread evenly on purpose, so s^2 / n overstates the error of their mean by an unknown factor
-// (and for some integrands Owen-scrambled nets understate it, by up to e; Owen 1997). So the
-// low-discrepancy image is the mean of R renders with independent seeds (independent
-// scramblings), and its variance is that of the R render means: an honest estimate whatever the
-// sampler does within a render. The graders and the stored references use independent samples
-// for the same reason (Render_Settings' default).
+// lab's own, so each image's variance counts, unlike a grader's comparison of a submission). With
+// independent samples it is the film's per-sample variance s^2 over n. With low-discrepancy samples
+// it is not: a pixel's samples are spread evenly on purpose, so s^2 / n overstates the error of
+// their mean by an unknown factor (and for some integrands Owen-scrambled nets understate it, by up
+// to e; Owen 1997). So the low-discrepancy image is the mean of R renders with independent seeds
+// (independent scramblings), and its variance is that of the R render means: an honest estimate
+// whatever the sampler does within a render. The graders and the stored references use independent
+// samples for the same reason (Render_Settings' default).
 #include "image_compare.h"
 #include "render.h"
 #include "scene_loader.h"

@@ -207,7 +207,8 @@ TEST_CASE("Pixel_Stats: third and fourth central moments equal the two-pass sums
 	for (int c = 0; c < 3; c++) {
 		glm::dvec2 expected = two_pass_m3_m4(samples, c);
 		CAPTURE(c, expected.x, expected.y, all.m3[c], all.m4[c], merged.m3[c], merged.m4[c]);
-		double m3_scale = std::pow(all.m2[c] / all.count, 1.5) * all.count; // m3 may be near 0: compare on the scale of sigma^3
+		// m3 may be near 0: compare it on the scale of n sigma^3.
+		double m3_scale = std::pow(all.m2[c] / all.count, 1.5) * all.count;
 		CHECK(std::abs(all.m3[c] - expected.x) <= 1e-9 * m3_scale);
 		CHECK(std::abs(merged.m3[c] - expected.x) <= 1e-9 * m3_scale);
 		CHECK(all.m4[c] == Approx(expected.y).epsilon(1e-9));

@@ -46,7 +46,9 @@ std::vector<std::string> checked_files() {
 	std::vector<std::string> files;
 	for (const Graded_Scene& scene : graded_scenes()) {
 		files.push_back(graded_scene_file(scene.name));
-		for (const char* suffix : {".json", "_mean.exr", "_var.exr", "_m4.exr"}) files.push_back(reference_file(scene.name, suffix));
+		for (const char* suffix : {".json", "_mean.exr", "_var.exr", "_m4.exr"}) {
+			files.push_back(reference_file(scene.name, suffix));
+		}
 	}
 	return files;
 }
@@ -109,7 +111,9 @@ Image_Calibration read_calibration(const Graded_Scene& scene, const Render_Setti
 
 Image_Estimate read_reference(const Graded_Scene& scene, const Render_Settings& grader) {
 	std::string record_file = reference_file(scene.name, ".json");
-	for (const char* suffix : {".json", "_mean.exr", "_var.exr", "_m4.exr"}) verify_checksum(reference_file(scene.name, suffix));
+	for (const char* suffix : {".json", "_mean.exr", "_var.exr", "_m4.exr"}) {
+		verify_checksum(reference_file(scene.name, suffix));
+	}
 	nlohmann::ordered_json record = read_record(scene);
 	if (record.at("view") != view_name(scene.view) || record.at("width") != grader.width ||
 	    record.at("height") != grader.height || record.at("max_depth") != grader.max_depth) {
@@ -136,9 +140,10 @@ void write_reference(const Graded_Scene& scene, const Film& film, const Render_S
 void count_reference_outliers(const Graded_Scene& scene, const std::function<void(size_t, size_t)>& progress) {
 	Scene loaded = load_scene(graded_scene_file(scene.name)); // its checksum is recorded after
 	nlohmann::ordered_json record = read_record(scene);
-	Image_Estimate reference = Image_Estimate::uniform(read_image(reference_file(scene.name, "_mean.exr")),
-	                                                   read_image(reference_file(scene.name, "_var.exr")),
-	                                                   read_image(reference_file(scene.name, "_m4.exr")), record.at("spp"));
+	Image_Estimate reference =
+		Image_Estimate::uniform(read_image(reference_file(scene.name, "_mean.exr")),
+		                        read_image(reference_file(scene.name, "_var.exr")),
+		                        read_image(reference_file(scene.name, "_m4.exr")), record.at("spp"));
 	nlohmann::ordered_json counts = nlohmann::ordered_json::array();
 	size_t done = 0, total = OUTLIER_RENDERS * scene.integrators.size();
 	for (Integrator integrator : scene.integrators) {

@@ -1,9 +1,10 @@
 #pragma once
 // The graded image scenes (scenes/graded/) and their stored references (scenes/graded/references/):
 // <scene>_mean.exr, <scene>_var.exr (per-sample variance), <scene>_m4.exr (per-sample fourth central
-// moment, for the bound on a render's noise) and <scene>.json, the settings that made them. A scene's own "film" block holds the graders' settings (size, samples, max_depth, seed);
-// the references use the same size and depth, REFERENCE_SPP_FACTOR times the samples and their
-// own seed. The instructors regenerate them (make_references, in their repository).
+// moment, for the bound on a render's noise) and <scene>.json, the settings that made them and the
+// outliers of correct renders (image_compare.h). A scene's own "film" block holds the graders'
+// settings (size, samples, max_depth, seed); the references use the same size and depth,
+// REFERENCE_SPP_FACTOR times the samples and their own seed. The instructors regenerate them (make_references, in their repository).
 #include "film.h"
 #include "image_compare.h"
 #include "pathtracer.h"
@@ -27,8 +28,8 @@ const Graded_Scene& graded_scene(const std::string& name);
 constexpr uint32_t REFERENCE_SPP_FACTOR = 64;
 constexpr uint64_t REFERENCE_SEED = 1000003; // different from every grader and calibration seed
 // The outlier counts (image_compare.h): renders with the graders' settings and seeds
-// OUTLIER_SEED, OUTLIER_SEED + 1, ... (different from the graders' public seeds and the calibration
-// test's, tests/images/test_calibration.cpp).
+// OUTLIER_SEED, OUTLIER_SEED + 1, ... (different from the graders' public seeds and those of the
+// instructors' calibration test).
 constexpr uint32_t OUTLIER_RENDERS = 100;
 constexpr uint64_t OUTLIER_SEED = 2000003;
 

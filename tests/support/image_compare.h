@@ -25,11 +25,11 @@
 //   own random numbers), so their number is a sum of independent Bernoulli variables; with mean λ
 //   its upper tail is at most Poisson(λ)'s (Hoeffding 1956, "On the distribution of the number of
 //   successes in independent trials", Ann. Math. Statist. 27, Theorem 4, with Anderson and Samuels
-//   1967 for the binomial). λ is measured: `./lab references` counts the outliers of 100 reference
-//   renders with seeds of their own (Image_Calibration), and the grader takes Garwood's (1936) upper
-//   99.9 % confidence limit of that Poisson mean. The render fails when its outliers are that
-//   improbable: P(Poisson(λ) >= outliers) <= α_means. A modelling error moves whole regions: hundreds
-//   to thousands of outliers.
+//   1967 for the binomial). λ is measured: the instructors' make_references counts the outliers of
+//   100 reference renders with seeds of their own (Image_Calibration), and the grader takes
+//   Garwood's (1936) upper 99.9 % confidence limit of that Poisson mean. The render fails when its
+//   outliers are that improbable: P(Poisson(λ) >= outliers) <= α_means. A modelling error moves
+//   whole regions: hundreds to thousands of outliers.
 // - The noise: the render's per-sample variance summed over pixels and channels may not exceed
 //   the reference's by more than sampling explains (noise_bound.h, with the reference's fourth
 //   moments), so noise and fireflies fail every time, not by chance.
@@ -70,7 +70,7 @@ constexpr double IMAGE_MIN_PASS_FRACTION = 0.9975; // compare_estimators only
 constexpr double IMAGE_SIGMA_FLOOR = 1e-4; // relative, see above
 constexpr double CALIBRATION_CONFIDENCE = 0.999; // of the upper limit of λ, see above
 
-// The outlier pixels of correct renders (see above): counted by `./lab references` over `renders`
+// The outlier pixels of correct renders (see above): counted by make_references over `renders`
 // renders of the reference with seeds of their own and the graders' settings.
 struct Image_Calibration {
 	uint32_t renders = 0;

@@ -33,7 +33,8 @@ Paired_Noise compare_noise(const std::array<std::vector<double>, 3>& submission,
                            const std::array<double, 3>& rounding_sd) {
 	std::vector<double> s(NOISE_BATCHES, 0.0), r(NOISE_BATCHES, 0.0), floor(NOISE_BATCHES, 0.0);
 	for (int c = 0; c < 3; c++) {
-		std::vector<double> sc = batch_variances(submission[c], NOISE_BATCHES), rc = batch_variances(reference[c], NOISE_BATCHES);
+		std::vector<double> sc = batch_variances(submission[c], NOISE_BATCHES);
+		std::vector<double> rc = batch_variances(reference[c], NOISE_BATCHES);
 		for (size_t b = 0; b < NOISE_BATCHES; b++) s[b] += sc[b], r[b] += rc[b], floor[b] += rounding_sd[c] * rounding_sd[c];
 	}
 	return compare_paired_variances(s, r, floor, alpha);
