@@ -105,6 +105,23 @@ Chi2_Result chi2_test(const std::vector<double>& observed, const std::vector<dou
 	return result;
 }
 
+double poisson_upper_tail(double lambda, uint64_t count) {
+	if (count == 0) return 1.0;
+	if (lambda <= 0.0) return 0.0;
+	return 1.0 - gamma_q(double(count), lambda); // P(X >= c) = P(c, lambda), the lower regularized gamma
+}
+
+double poisson_upper_limit(uint64_t count, double confidence) {
+	// P(Poisson(lambda) <= count) = Q(count + 1, lambda) falls from 1 to 0 as lambda grows: bisect.
+	double lo = 0.0, hi = 10.0 + 2.0 * double(count);
+	while (gamma_q(double(count) + 1.0, hi) > 1.0 - confidence) hi *= 2.0;
+	for (int i = 0; i < 200; i++) {
+		double mid = 0.5 * (lo + hi);
+		(gamma_q(double(count) + 1.0, mid) > 1.0 - confidence ? lo : hi) = mid;
+	}
+	return hi;
+}
+
 double binomial_z(size_t successes, size_t trials, double p) {
 	double mean = double(trials) * p;
 	double sd = std::sqrt(double(trials) * p * (1.0 - p));

@@ -2,6 +2,7 @@
 // Statistics for graders. Every random test uses a fixed seed and a threshold derived from the
 // test's own significance level, corrected for the number of tests that share it (Šidák).
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace stats {
@@ -34,6 +35,13 @@ struct Chi2_Result {
 // merged until each pool reaches the minimum), as in pbrt-v4 and Mitsuba 3.
 Chi2_Result chi2_test(const std::vector<double>& observed, const std::vector<double>& expected,
                       double min_expected = 5.0);
+
+// P(X >= count) for X ~ Poisson(lambda).
+double poisson_upper_tail(double lambda, uint64_t count);
+
+// Garwood's (1936) upper confidence limit of a Poisson mean from one observed count: the lambda
+// with P(Poisson(lambda) <= count) = 1 - confidence.
+double poisson_upper_limit(uint64_t count, double confidence);
 
 // Two-sided binomial test by the normal approximation: z of observing `successes` in `trials`
 // when the success probability is p.
