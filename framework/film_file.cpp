@@ -42,6 +42,8 @@ std::vector<Channel> channels_of(const Film& film) {
 	for (int c = 0; c < 3; c++) {
 		add_double(rgb[c], std::string("mean_residual.") + rgb[c], c, &Pixel_Stats::mean);
 		add_double(std::string("m2.") + rgb[c], std::string("m2_residual.") + rgb[c], c, &Pixel_Stats::m2);
+		add_double(std::string("m3.") + rgb[c], std::string("m3_residual.") + rgb[c], c, &Pixel_Stats::m3);
+		add_double(std::string("m4.") + rgb[c], std::string("m4_residual.") + rgb[c], c, &Pixel_Stats::m4);
 	}
 	Channel count{"count", {}, {}}, non_finite{"non_finite", {}, {}};
 	for (const Pixel_Stats& p : film.pixels) {
@@ -203,6 +205,8 @@ Film_File read_film(const std::string& path) {
 	for (int c = 0; c < 3; c++) {
 		read_double(rgb[c], std::string("mean_residual.") + rgb[c], c, &Pixel_Stats::mean);
 		read_double(std::string("m2.") + rgb[c], std::string("m2_residual.") + rgb[c], c, &Pixel_Stats::m2);
+		read_double(std::string("m3.") + rgb[c], std::string("m3_residual.") + rgb[c], c, &Pixel_Stats::m3);
+		read_double(std::string("m4.") + rgb[c], std::string("m4_residual.") + rgb[c], c, &Pixel_Stats::m4);
 	}
 	const uint32_t* count = reinterpret_cast<const uint32_t*>(plane("count", TINYEXR_PIXELTYPE_UINT));
 	const uint32_t* non_finite = reinterpret_cast<const uint32_t*>(plane("non_finite", TINYEXR_PIXELTYPE_UINT));

@@ -2,7 +2,7 @@
 // A film as a file, so that a render split into passes (--pass I/N, possibly on other machines) can
 // be merged exactly (merge_films). An OpenEXR file whose R, G, B channels are the mean (any viewer
 // shows the picture), with the rest of each pixel's statistics beside it: the sample counts (32-bit
-// integers), and mean and m2 (film.h) in double precision, each stored as a float and the float
+// integers), and mean, m2, m3 and m4 (film.h) in double precision, each stored as a float and the float
 // residual (x = hi + lo to within 2^-48 |x|). Its header names the render it belongs to.
 #include "film.h"
 

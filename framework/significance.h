@@ -2,6 +2,7 @@
 // Significance levels of z-tests, shared by the image comparison (image_compare.h) and the
 // graders' statistics (tests/support/statistics.h).
 #include <cstddef>
+#include <cstdint>
 
 namespace stats {
 
@@ -15,5 +16,15 @@ double normal_quantile(double p);
 
 // The |z| above which a two-sided z-test at significance alpha rejects.
 double two_sided_z(double alpha);
+
+// Regularized upper incomplete gamma function Q(a, x) = Gamma(a, x) / Gamma(a).
+double gamma_q(double a, double x);
+
+// P(X >= count) for X ~ Poisson(lambda).
+double poisson_upper_tail(double lambda, uint64_t count);
+
+// Garwood's (1936) upper confidence limit of a Poisson mean from one observed count: the lambda
+// with P(Poisson(lambda) <= count) = 1 - confidence.
+double poisson_upper_limit(uint64_t count, double confidence);
 
 } // namespace stats

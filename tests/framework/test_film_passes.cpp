@@ -69,7 +69,7 @@ TEST_CASE("N passes draw every sample of the render once: their counts add up to
 	}
 }
 
-TEST_CASE("a film file keeps each pixel's count exactly and its mean and m2 to 2^-48") {
+TEST_CASE("a film file keeps each pixel's count exactly and its mean, m2, m3 and m4 to 2^-48") {
 	Scene scene = load_scene("scenes/cornell_box.json");
 	Film film = render_pass(Pathtracer(scene, small(scene)), 2, 3);
 	Temp_Dir dir;
@@ -90,6 +90,8 @@ TEST_CASE("a film file keeps each pixel's count exactly and its mean and m2 to 2
 		for (int c = 0; c < 3; c++) {
 			CHECK(std::abs(a.mean[c] - b.mean[c]) <= RESIDUAL * std::abs(a.mean[c]));
 			CHECK(std::abs(a.m2[c] - b.m2[c]) <= RESIDUAL * a.m2[c]);
+			CHECK(std::abs(a.m3[c] - b.m3[c]) <= RESIDUAL * std::abs(a.m3[c]));
+			CHECK(std::abs(a.m4[c] - b.m4[c]) <= RESIDUAL * a.m4[c]);
 		}
 	}
 }
@@ -120,6 +122,10 @@ TEST_CASE("merging the passes' film files, in any order, gives the single render
 			                << "; merged mean " << joined.mean[c] << ", m2 " << joined.m2[c]);
 			CHECK(std::abs(joined.mean[c] - single.mean[c]) <= bound.mean);
 			CHECK(std::abs(joined.m2[c] - single.m2[c]) <= bound.m2);
+			// m4, a sum of fourth powers, on the same reasoning is off by a few n^2 EPSILON M^4; the
+			// check only asks that the merge formula is the right one (10^-9 of M^4 n).
+			double m = std::abs(single.mean[c]) + std::sqrt(single.m2[c]);
+			CHECK(std::abs(joined.m4[c] - single.m4[c]) <= 1e-9 * m * m * m * m * double(single.count));
 		}
 	}
 }

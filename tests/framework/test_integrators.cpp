@@ -3,14 +3,15 @@
 // by power (--light-choice power) and low-discrepancy samples (--sampler sobol) against the lab's
 // estimator (task 4 with task 6's mixture, lights chosen uniformly, independent samples).
 //
-// The z-tests need each image's variance of the mean. With independent samples it is the film's
-// per-sample variance s^2 over n. With low-discrepancy samples it is not: a pixel's samples are
-// spread evenly on purpose, so s^2 / n overstates the error of their mean by an unknown factor
-// (and for some integrands Owen-scrambled nets understate it, by up to e; Owen 1997). So the
-// low-discrepancy image is the mean of R renders with independent seeds (independent
-// scramblings), and its variance is that of the R render means: an honest estimate whatever the
-// sampler does within a render. The graders and the stored references use independent samples
-// for the same reason (Render_Settings' default).
+// The z-tests need each image's variance of the mean (compare_estimators: both estimators are the
+// lab's own, so each image's variance counts, unlike a grader's comparison of a submission). With
+// independent samples it is the film's per-sample variance s^2 over n. With low-discrepancy samples
+// it is not: a pixel's samples are spread evenly on purpose, so s^2 / n overstates the error of
+// their mean by an unknown factor (and for some integrands Owen-scrambled nets understate it, by up
+// to e; Owen 1997). So the low-discrepancy image is the mean of R renders with independent seeds
+// (independent scramblings), and its variance is that of the R render means: an honest estimate
+// whatever the sampler does within a render. The graders and the stored references use independent
+// samples for the same reason (Render_Settings' default).
 #include "image_compare.h"
 #include "render.h"
 #include "scene_loader.h"
@@ -69,13 +70,13 @@ Image_Estimate replicated(const Scene& scene, Render_Settings settings) {
 		mean.pixels[i] = Spectrum(mu);
 		variance.pixels[i] = Spectrum(glm::max((sum2 - double(REPLICATES) * mu * mu) / double(REPLICATES - 1), 0.0));
 	}
-	return Image_Estimate::uniform(std::move(mean), std::move(variance), REPLICATES);
+	return Image_Estimate::uniform(std::move(mean), std::move(variance), HDR_Image{}, REPLICATES);
 }
 
-// The lab's image (the noisier, first: compare_images takes the larger per-sample variance for it)
+// The lab's image (the noisier, first: compare_estimators takes the larger per-sample variance for it)
 // against another estimator's.
 void check_agree(const Image_Estimate& lab, const Image_Estimate& other, const std::string& what) {
-	Image_Comparison c = compare_images(lab, other);
+	Image_Comparison c = compare_estimators(lab, other);
 	INFO(what << ": " << c.message);
 	CHECK(c.pass);
 }
@@ -106,9 +107,9 @@ TEST_CASE("the image comparison tells an estimator with a 5 % brighter light apa
 	Image_Estimate lab = rendered(scene, small(scene, Integrator::mixture, Light_Choice::uniform, Sampler::independent));
 	for (Material& material : scene.materials) material.emission *= 1.05f;
 	Image_Comparison independent =
-		compare_images(lab, rendered(scene, small(scene, Integrator::nee, Light_Choice::power, Sampler::independent)));
+		compare_estimators(lab, rendered(scene, small(scene, Integrator::nee, Light_Choice::power, Sampler::independent)));
 	Image_Comparison low_discrepancy =
-		compare_images(lab, replicated(scene, small(scene, Integrator::nee, Light_Choice::power, Sampler::sobol)));
+		compare_estimators(lab, replicated(scene, small(scene, Integrator::nee, Light_Choice::power, Sampler::sobol)));
 	INFO("independent samples: " << independent.message << "\nlow-discrepancy samples: " << low_discrepancy.message);
 	CHECK_FALSE(independent.pass);
 	CHECK_FALSE(low_discrepancy.pass);

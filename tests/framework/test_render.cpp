@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <mutex>
@@ -51,7 +52,8 @@ Render_Options threads_and_tiles(uint32_t threads, uint32_t tile_size, bool shuf
 
 bool same_bits(const Pixel_Stats& a, const Pixel_Stats& b) {
 	return a.count == b.count && a.non_finite == b.non_finite && std::memcmp(&a.mean, &b.mean, sizeof a.mean) == 0 &&
-	       std::memcmp(&a.m2, &b.m2, sizeof a.m2) == 0;
+	       std::memcmp(&a.m2, &b.m2, sizeof a.m2) == 0 && std::memcmp(&a.m3, &b.m3, sizeof a.m3) == 0 &&
+	       std::memcmp(&a.m4, &b.m4, sizeof a.m4) == 0;
 }
 
 // Index of the first pixel whose statistics differ in any bit, or -1 if the films are identical.
@@ -169,6 +171,50 @@ TEST_CASE("Pixel_Stats: mean and unbiased variance equal the two-pass formulas")
 		// The film's images are the same numbers in float.
 		CHECK(film.mean().pixels[0][c] == Approx(float(mean)).epsilon(1e-6));
 		CHECK(film.variance().pixels[0][c] == Approx(float(variance)).epsilon(1e-6));
+	}
+}
+
+namespace {
+// Sums of the third and fourth powers of the deviations from the mean, in two passes.
+glm::dvec2 two_pass_m3_m4(const std::vector<Spectrum>& samples, int c) {
+	double mean = 0.0;
+	for (Spectrum s : samples) mean += double(s[c]) / double(samples.size());
+	glm::dvec2 m{0.0};
+	for (Spectrum s : samples) {
+		double d = double(s[c]) - mean;
+		m += glm::dvec2(d * d * d, d * d * d * d);
+	}
+	return m;
+}
+} // namespace
+
+TEST_CASE("Pixel_Stats: third and fourth central moments equal the two-pass sums, added or merged") {
+	// Skewed, heavy-tailed samples (a rare bright one, as a firefly), far from 0 in one channel.
+	std::vector<Spectrum> samples;
+	for (int i = 0; i < 101; i++) {
+		float k = float(i % 7) - 3.0f;
+		samples.push_back(Spectrum{(i % 37 == 5) ? 500.0f : 0.25f * float(i % 11), 1e3f + 0.5f * k * k * k,
+		                           (i % 3) ? 3.0f : -1.0f});
+	}
+	Pixel_Stats all, first, second;
+	for (size_t i = 0; i < samples.size(); i++) {
+		all.add(samples[i]);
+		(i < 40 ? first : second).add(samples[i]);
+	}
+	Pixel_Stats merged = first;
+	merged.merge(second);
+	Film film(1, 1);
+	film.pixels[0] = all;
+	for (int c = 0; c < 3; c++) {
+		glm::dvec2 expected = two_pass_m3_m4(samples, c);
+		CAPTURE(c, expected.x, expected.y, all.m3[c], all.m4[c], merged.m3[c], merged.m4[c]);
+		// m3 may be near 0: compare it on the scale of n sigma^3.
+		double m3_scale = std::pow(all.m2[c] / all.count, 1.5) * all.count;
+		CHECK(std::abs(all.m3[c] - expected.x) <= 1e-9 * m3_scale);
+		CHECK(std::abs(merged.m3[c] - expected.x) <= 1e-9 * m3_scale);
+		CHECK(all.m4[c] == Approx(expected.y).epsilon(1e-9));
+		CHECK(merged.m4[c] == Approx(expected.y).epsilon(1e-9));
+		CHECK(film.fourth_moment().pixels[0][c] == Approx(float(expected.y / double(samples.size()))).epsilon(1e-6));
 	}
 }
 

@@ -10,10 +10,12 @@
 //   make_references --merge --passes DIR [SCENE...]
 //                                               merge the N passes in DIR into the references
 //
-// A reference made from N passes is the one rendered whole, up to the order of the sums (the
-// passes draw every sample once, framework/film_file.h). Every run that writes a reference ends by
-// recording the SHA-256 of every graded scene and reference file (graded_images.h), which the
-// graders verify. Run from the repository root.
+// A reference made from N passes is the one rendered whole, up to the order of the sums (the passes
+// draw every sample once, framework/film_file.h). Every reference written is then checked against
+// OUTLIER_RENDERS renders of the reference with the graders' settings and seeds of their own, whose
+// outlier pixels its record keeps (image_compare.h: how many a correct render has). Every run that
+// writes a reference ends by recording the SHA-256 of every graded scene and reference file
+// (graded_images.h), which the graders verify. Run from the repository root.
 #include "error.h"
 #include "film_file.h"
 #include "graded_images.h"
@@ -103,6 +105,15 @@ std::vector<std::string> pass_files(const std::string& dir, const std::string& s
 	return files;
 }
 
+// The outliers of correct renders, into the reference's record (graded_images.h).
+void count_outliers_of(const Graded_Scene& scene) {
+	auto start = std::chrono::steady_clock::now();
+	Progress_Bar bar(std::cerr, stderr_is_terminal());
+	count_reference_outliers(scene, [&](size_t done, size_t total) { bar.update(done, total); });
+	std::cerr << "  counted the outliers of " << OUTLIER_RENDERS * scene.integrators.size() << " correct renders in "
+	          << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
+}
+
 void make_reference(const Graded_Scene& scene, const Arguments& a) {
 	Scene loaded = load_graded(scene);
 	Render_Settings settings = reference_settings(loaded);
@@ -116,8 +127,9 @@ void make_reference(const Graded_Scene& scene, const Arguments& a) {
 			                  std::to_string(settings.samples) + " and " + std::to_string(settings.seed));
 		}
 		write_reference(scene, merged.film, settings);
-		std::cerr << scene.name << ": merged the passes into " << reference_file(scene.name, "_{mean,var}.exr, .json")
+		std::cerr << scene.name << ": merged the passes into " << reference_file(scene.name, "_{mean,var,m4}.exr, .json")
 		          << "\n";
+		count_outliers_of(scene);
 		return;
 	}
 	auto [pass, passes] = a.pass.value_or(std::pair<uint32_t, uint32_t>{1, 1});
@@ -134,7 +146,8 @@ void make_reference(const Graded_Scene& scene, const Arguments& a) {
 		return;
 	}
 	write_reference(scene, film, settings);
-	std::cerr << "  wrote " << reference_file(scene.name, "_{mean,var}.exr, .json") << " in " << seconds() << " s\n";
+	std::cerr << "  wrote " << reference_file(scene.name, "_{mean,var,m4}.exr, .json") << " in " << seconds() << " s\n";
+	count_outliers_of(scene);
 }
 
 } // namespace

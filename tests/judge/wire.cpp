@@ -82,7 +82,7 @@ void Writer::put(const HDR_Image& image) {
 	(*this)(image.w, image.h, image.pixels);
 }
 void Writer::put(const Pixel_Stats& p) {
-	(*this)(p.count, p.non_finite, p.mean, p.m2);
+	(*this)(p.count, p.non_finite, p.mean, p.m2, p.m3, p.m4);
 }
 void Writer::put(const Film& film) {
 	(*this)(film.w, film.h, film.pixels);
@@ -211,7 +211,7 @@ void Reader::get(HDR_Image& image) {
 	if (image.pixels.size() != size_t(image.w) * image.h) throw Malformed("an image whose size and pixels disagree");
 }
 void Reader::get(Pixel_Stats& p) {
-	(*this)(p.count, p.non_finite, p.mean, p.m2);
+	(*this)(p.count, p.non_finite, p.mean, p.m2, p.m3, p.m4);
 }
 void Reader::get(Film& film) {
 	(*this)(film.w, film.h, film.pixels);

@@ -28,6 +28,7 @@ double channel_average(Spectrum s) {
 
 Incoming_Sample draw(const Pathtracer& pt, Strategy strategy, RNG& rng, const Trace& point, const BSDF& bsdf,
                      Vec3 out_dir) {
+	if (strategy == Strategy::mixture) return pt.sample_incoming(rng, point, bsdf, out_dir);
 	Frame frame = Frame::from_normal(point.normal);
 	Vec3 out_local = frame.to_local(out_dir);
 	if (strategy == Strategy::bsdf) {
@@ -46,26 +47,4 @@ double reflected_radiance_sample(const Scene& scene, const Trace& point, const I
 	                                 : Spectrum{0.0f};
 	if (weight == Spectrum{0.0f}) return 0.0;
 	return channel_average(weight * arriving_radiance(scene, point.position, s.direction));
-}
-
-double Sample_Moments::standard_error() const {
-	return std::sqrt(variance / double(n));
-}
-
-double Sample_Moments::variance_of_variance() const {
-	return (fourth - variance * variance) / double(n);
-}
-
-Sample_Moments moments(const std::vector<double>& samples) {
-	Sample_Moments m;
-	m.n = samples.size();
-	for (double x : samples) m.mean += x / double(m.n);
-	double m2 = 0.0, m4 = 0.0;
-	for (double x : samples) {
-		double d = (x - m.mean) * (x - m.mean);
-		m2 += d, m4 += d * d;
-	}
-	m.variance = m2 / double(m.n - 1);
-	m.fourth = m4 / double(m.n);
-	return m;
 }

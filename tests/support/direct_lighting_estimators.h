@@ -4,6 +4,7 @@
 // the emission of the first surface hit (or the environment), as the path tracer sees it with
 // max_depth = 1.
 #include "pathtracer.h"
+#include "sample_moments.h"
 
 #include <vector>
 
@@ -16,8 +17,9 @@ Spectrum arriving_radiance(const Scene& scene, Vec3 from, Vec3 dir);
 
 // The grader's own strategies, for comparison with the student's mixture (sample_incoming).
 enum class Strategy {
-	bsdf,   // BSDF::scatter in the local frame, with density BSDF::pdf
-	lights, // Pathtracer::sample_area_lights, with density area_lights_pdf
+	bsdf,    // BSDF::scatter in the local frame, with density BSDF::pdf
+	lights,  // Pathtracer::sample_area_lights, with density area_lights_pdf
+	mixture, // the reference's Pathtracer::sample_incoming (the judge links the reference of every task)
 };
 
 // One direction drawn with `strategy`, as sample_incoming would return it.
@@ -27,14 +29,3 @@ Incoming_Sample draw(const Pathtracer& pt, Strategy strategy, RNG& rng, const Tr
 // The sample of L_o = f * L_in * |cos theta| / pdf that a direction gives (the attenuation alone
 // for a discrete sample; 0 when pdf = 0), averaged over the RGB channels.
 double reflected_radiance_sample(const Scene& scene, const Trace& point, const Incoming_Sample& s);
-
-// Mean, unbiased variance and fourth central moment of a set of samples.
-struct Sample_Moments {
-	size_t n = 0;
-	double mean = 0.0, variance = 0.0, fourth = 0.0;
-
-	double standard_error() const; // of the mean
-	// Asymptotic variance of the sample variance, (m4 - s^4) / n, for comparing two variances.
-	double variance_of_variance() const;
-};
-Sample_Moments moments(const std::vector<double>& samples);

@@ -5,18 +5,25 @@
 #include <cmath>
 #include <sstream>
 
-Film_Mean film_mean(const Film& film, int channel, const std::function<bool(uint32_t, uint32_t)>& select) {
+namespace {
+// The reference's per-sample variance of pixel i, channel c: m2 / (N - 1).
+double reference_variance(const Film& reference, size_t i, int c) {
+	const Pixel_Stats& p = reference.pixels[i];
+	return p.count > 1 ? p.m2[c] / double(p.count - 1) : 0.0;
+}
+} // namespace
+
+Film_Mean film_mean(const Furnace_Render& render, int channel, const Pixel_Selection& select) {
+	const Film& film = render.film;
 	Film_Mean result;
 	double sum = 0.0, variance_sum = 0.0;
 	for (uint32_t y = 0; y < film.h; y++) {
 		for (uint32_t x = 0; x < film.w; x++) {
 			if (!select(x, y)) continue;
-			const Pixel_Stats& p = film.pixels[size_t(y) * film.w + x];
-			sum += p.mean[channel];
-			// Variance of this pixel's mean: s^2 / n with s^2 = m2 / (n - 1).
-			if (p.count > 1) variance_sum += p.m2[channel] / double(p.count - 1) / double(p.count);
+			size_t i = size_t(y) * film.w + x;
+			sum += film.pixels[i].mean[channel];
+			variance_sum += reference_variance(render.reference, i, channel) / double(render.samples);
 			result.pixels++;
-			result.samples += p.count;
 		}
 	}
 	if (result.pixels == 0) return result;
@@ -26,9 +33,10 @@ Film_Mean film_mean(const Film& film, int channel, const std::function<bool(uint
 	return result;
 }
 
-Mean_Check compare_mean(const Film& film, int channel, double expected, double z_critical, const std::string& what,
-                        const std::function<bool(uint32_t, uint32_t)>& select) {
-	Film_Mean m = film_mean(film, channel, select);
+Mean_Check compare_mean(const Furnace_Render& render, int channel, double expected, double z_critical,
+                        const std::string& what, const Pixel_Selection& select) {
+	const Film& film = render.film;
+	Film_Mean m = film_mean(render, channel, select);
 	// The selected pixel farthest from the expected value, to point at in the message.
 	double worst = -1.0, worst_value = 0.0;
 	uint32_t worst_x = 0, worst_y = 0;
@@ -42,12 +50,13 @@ Mean_Check compare_mean(const Film& film, int channel, double expected, double z
 	}
 	double allowed = z_critical * m.standard_error + FLOAT_SLACK * std::max(1.0, std::abs(expected));
 	Mean_Check check;
-	check.pass = m.pixels > 0 && m.samples > 0 && std::abs(m.mean - expected) <= allowed;
+	check.pass = m.pixels > 0 && std::abs(m.mean - expected) <= allowed;
 	std::ostringstream s;
 	s.precision(7);
 	s << what << ": measured " << m.mean << ", expected " << expected << " (allowed difference " << allowed
-	  << " = " << z_critical << " standard errors of " << m.standard_error << " + float rounding); " << m.pixels
-	  << " pixels, " << m.samples << " samples";
+	  << " = " << z_critical << " standard errors of " << m.standard_error
+	  << " (the reference's noise) + float rounding); " << m.pixels << " pixels, " << render.samples
+	  << " samples each";
 	if (m.pixels > 0) {
 		s << "; the pixel farthest from " << expected << " is (" << worst_x << ", " << worst_y << ") = " << worst_value;
 	}
@@ -61,32 +70,58 @@ const char* channel_name(int channel) {
 	return names[channel];
 }
 
-void check_mean(const Film& film, int channel, double expected, double z_critical, const std::string& what,
-                const std::function<bool(uint32_t, uint32_t)>& select) {
+void check_mean(const Furnace_Render& render, int channel, double expected, double z_critical, const std::string& what,
+                const Pixel_Selection& select) {
 	Mean_Check check =
-		compare_mean(film, channel, expected, z_critical, what + ", " + channel_name(channel) + " channel", select);
+		compare_mean(render, channel, expected, z_critical, what + ", " + channel_name(channel) + " channel", select);
 	INFO(check.message);
 	CHECK(check.pass);
 }
 
-bool check_mean_rgb(const Film& film, glm::dvec3 expected, double z_critical, const std::string& what,
-                    const std::function<bool(uint32_t, uint32_t)>& select, const std::string& if_too_dark) {
+bool check_mean_rgb(const Furnace_Render& render, glm::dvec3 expected, double z_critical, const std::string& what,
+                    const Pixel_Selection& select, const std::string& if_too_dark) {
 	std::string failures;
 	bool all_too_dark = true, channels_alike = true;
-	double first_measured = film_mean(film, 0, select).mean;
+	double first_measured = film_mean(render, 0, select).mean;
 	for (int c = 0; c < 3; c++) {
-		Film_Mean m = film_mean(film, c, select);
+		Film_Mean m = film_mean(render, c, select);
 		channels_alike = channels_alike && m.mean == first_measured && expected[c] == expected[0];
-		Mean_Check check = compare_mean(film, c, expected[c], z_critical, std::string(channel_name(c)) + " channel", select);
+		Mean_Check check =
+			compare_mean(render, c, expected[c], z_critical, std::string(channel_name(c)) + " channel", select);
 		if (check.pass) continue;
 		all_too_dark = all_too_dark && m.mean < expected[c];
 		failures += (failures.empty() ? "" : "; ") + check.message;
 	}
 	bool pass = failures.empty();
 	if (!pass && channels_alike) {
-		failures = compare_mean(film, 0, expected[0], z_critical, "every channel", select).message;
+		failures = compare_mean(render, 0, expected[0], z_critical, "every channel", select).message;
 	}
 	INFO(what << ": " << failures << (all_too_dark && !if_too_dark.empty() ? ". " + if_too_dark : ""));
 	CHECK(pass);
 	return pass;
+}
+
+Paired_Noise compare_noise(const Furnace_Render& render, double alpha) {
+	// One pair per pixel: the per-sample variances summed over the channels (pixels are independent,
+	// the channels of one pixel are not).
+	std::vector<double> submission, reference, rounding;
+	for (size_t i = 0; i < render.film.pixels.size(); i++) {
+		const Pixel_Stats &p = render.film.pixels[i], &r = render.reference.pixels[i];
+		double s = 0.0, v = 0.0, floor = 0.0;
+		for (int c = 0; c < 3; c++) {
+			s += p.count > 1 ? p.m2[c] / double(p.count - 1) : 0.0;
+			v += reference_variance(render.reference, i, c);
+			double sd = FLOAT_SLACK * std::max(1.0, std::abs(r.mean[c]));
+			floor += sd * sd;
+		}
+		submission.push_back(s), reference.push_back(v), rounding.push_back(floor);
+	}
+	return compare_paired_variances(submission, reference, rounding, alpha);
+}
+
+bool check_noise(const Furnace_Render& render, double alpha, const std::string& what, const std::string& if_noisy) {
+	Paired_Noise check = compare_noise(render, alpha);
+	INFO(what << ": too noisy: " << describe(check, "pixel") << ". " << if_noisy);
+	CHECK(check.pass);
+	return check.pass;
 }

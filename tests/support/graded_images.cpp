@@ -13,7 +13,7 @@ const std::vector<Graded_Scene>& graded_scenes() {
 		{"eye_bunny", View::eye_light},        // tasks 1-3
 		{"cornell_diffuse", View::path},       // task 4
 		{"glass_balls", View::path},           // task 5
-		{"cornell_small_light", View::path},   // task 6
+		{"cornell_small_light", View::path, {Integrator::mixture, Integrator::nee}}, // task 6 and its extension
 		{"env_overcast", View::path},          // task 7
 	};
 	return scenes;
@@ -46,7 +46,9 @@ std::vector<std::string> checked_files() {
 	std::vector<std::string> files;
 	for (const Graded_Scene& scene : graded_scenes()) {
 		files.push_back(graded_scene_file(scene.name));
-		for (const char* suffix : {".json", "_mean.exr", "_var.exr"}) files.push_back(reference_file(scene.name, suffix));
+		for (const char* suffix : {".json", "_mean.exr", "_var.exr", "_m4.exr"}) {
+			files.push_back(reference_file(scene.name, suffix));
+		}
 	}
 	return files;
 }
@@ -82,24 +84,51 @@ Film render_graded(const Graded_Scene& graded, const Scene& scene, uint32_t samp
 	return render(pathtracer, options);
 }
 
-Image_Estimate read_reference(const Graded_Scene& scene, const Render_Settings& grader) {
+namespace {
+const char* integrator_name(Integrator integrator) {
+	return integrator == Integrator::nee ? "nee" : "mixture";
+}
+
+nlohmann::ordered_json read_record(const Graded_Scene& scene) {
 	std::string record_file = reference_file(scene.name, ".json");
-	for (const char* suffix : {".json", "_mean.exr", "_var.exr"}) verify_checksum(reference_file(scene.name, suffix));
 	std::ifstream in(record_file);
 	if (!in) throw Input_Error(record_file + ": missing; run `./lab references` to make the reference images");
-	nlohmann::json record = nlohmann::json::parse(in);
+	return nlohmann::ordered_json::parse(in);
+}
+} // namespace
+
+Image_Calibration read_calibration(const Graded_Scene& scene, const Render_Settings& grader) {
+	std::string record_file = reference_file(scene.name, ".json");
+	verify_checksum(record_file);
+	nlohmann::ordered_json record = read_record(scene);
+	for (const auto& entry : record.value("outliers", nlohmann::ordered_json::array())) {
+		if (entry.at("integrator") != integrator_name(grader.integrator) || entry.at("samples") != grader.samples) continue;
+		return Image_Calibration{entry.at("renders"), entry.at("outliers"), entry.at("z_critical")};
+	}
+	throw Input_Error(record_file + ": no outlier counts of renders with " + std::to_string(grader.samples) +
+	                  " samples and --integrator " + integrator_name(grader.integrator) + "; run `./lab references`");
+}
+
+Image_Estimate read_reference(const Graded_Scene& scene, const Render_Settings& grader) {
+	std::string record_file = reference_file(scene.name, ".json");
+	for (const char* suffix : {".json", "_mean.exr", "_var.exr", "_m4.exr"}) {
+		verify_checksum(reference_file(scene.name, suffix));
+	}
+	nlohmann::ordered_json record = read_record(scene);
 	if (record.at("view") != view_name(scene.view) || record.at("width") != grader.width ||
 	    record.at("height") != grader.height || record.at("max_depth") != grader.max_depth) {
 		throw Input_Error(record_file + ": made with other settings than " + graded_scene_file(scene.name) +
 		                  " now has; run `./lab references`");
 	}
 	return Image_Estimate::uniform(read_image(reference_file(scene.name, "_mean.exr")),
-	                               read_image(reference_file(scene.name, "_var.exr")), record.at("spp"));
+	                               read_image(reference_file(scene.name, "_var.exr")),
+	                               read_image(reference_file(scene.name, "_m4.exr")), record.at("spp"));
 }
 
 void write_reference(const Graded_Scene& scene, const Film& film, const Render_Settings& settings) {
 	write_exr(reference_file(scene.name, "_mean.exr"), film.mean());
 	write_exr(reference_file(scene.name, "_var.exr"), film.variance());
+	write_exr(reference_file(scene.name, "_m4.exr"), film.fourth_moment());
 	nlohmann::ordered_json record{{"scene", graded_scene_file(scene.name)}, {"view", view_name(scene.view)},
 	                              {"width", film.w}, {"height", film.h},
 	                              {"max_depth", settings.max_depth}, {"spp", settings.samples},
@@ -108,10 +137,40 @@ void write_reference(const Graded_Scene& scene, const Film& film, const Render_S
 	std::ofstream(reference_file(scene.name, ".json")) << record.dump(1, '\t') << "\n";
 }
 
-Reference_Check compare_with_reference(const Graded_Scene& scene, const Film& film, const Render_Settings& settings) {
-	Image_Estimate render = Image_Estimate::from(film);
+void count_reference_outliers(const Graded_Scene& scene, const std::function<void(size_t, size_t)>& progress) {
+	Scene loaded = load_scene(graded_scene_file(scene.name)); // its checksum is recorded after
+	nlohmann::ordered_json record = read_record(scene);
+	Image_Estimate reference =
+		Image_Estimate::uniform(read_image(reference_file(scene.name, "_mean.exr")),
+		                        read_image(reference_file(scene.name, "_var.exr")),
+		                        read_image(reference_file(scene.name, "_m4.exr")), record.at("spp"));
+	nlohmann::ordered_json counts = nlohmann::ordered_json::array();
+	size_t done = 0, total = OUTLIER_RENDERS * scene.integrators.size();
+	for (Integrator integrator : scene.integrators) {
+		Render_Settings settings = loaded.settings;
+		settings.integrator = integrator;
+		uint64_t outliers = 0;
+		for (uint32_t r = 0; r < OUTLIER_RENDERS; r++) {
+			Render_Options options;
+			options.threads = 0; // every core
+			settings.seed = OUTLIER_SEED + r;
+			Film film = render(Pathtracer(loaded, settings, scene.view), options);
+			outliers += count_outliers(Image_Estimate::from(film, settings.samples), reference);
+			if (progress) progress(++done, total);
+		}
+		counts.push_back({{"integrator", integrator_name(integrator)}, {"samples", settings.samples},
+		                  {"renders", OUTLIER_RENDERS}, {"outliers", outliers},
+		                  {"z_critical", outlier_z(size_t(settings.width) * settings.height)}});
+	}
+	record["outliers"] = counts;
+	std::ofstream(reference_file(scene.name, ".json")) << record.dump(1, '\t') << "\n";
+}
+
+Reference_Check compare_with_reference(const Graded_Scene& scene, const Film& film, const Render_Settings& settings,
+                                       double alpha) {
+	Image_Estimate render = Image_Estimate::from(film, settings.samples); // the samples asked for
 	Image_Estimate reference = read_reference(scene, settings);
-	Image_Comparison comparison = compare_images(render, reference);
+	Image_Comparison comparison = compare_images(render, reference, read_calibration(scene, settings), alpha);
 	return Reference_Check{comparison, film.non_finite(), std::move(render), std::move(reference)};
 }
 

@@ -7,43 +7,6 @@
 
 namespace stats {
 
-namespace {
-// Series for the lower regularized gamma P(a, x), good for x < a + 1 (Numerical Recipes §6.2).
-double gamma_p_series(double a, double x) {
-	double term = 1.0 / a, sum = term;
-	for (int n = 1; n < 100000; n++) {
-		term *= x / (a + n);
-		sum += term;
-		if (std::abs(term) < std::abs(sum) * 1e-16) break;
-	}
-	return sum * std::exp(-x + a * std::log(x) - std::lgamma(a));
-}
-
-// Continued fraction (modified Lentz) for the upper regularized gamma Q(a, x), x >= a + 1.
-double gamma_q_fraction(double a, double x) {
-	const double tiny = 1e-300;
-	double b = x + 1.0 - a, c = 1.0 / tiny, d = 1.0 / b, h = d;
-	for (int i = 1; i < 100000; i++) {
-		double an = -i * (i - a);
-		b += 2.0;
-		d = an * d + b;
-		if (std::abs(d) < tiny) d = tiny;
-		c = b + an / c;
-		if (std::abs(c) < tiny) c = tiny;
-		d = 1.0 / d;
-		double delta = d * c;
-		h *= delta;
-		if (std::abs(delta - 1.0) < 1e-16) break;
-	}
-	return std::exp(-x + a * std::log(x) - std::lgamma(a)) * h;
-}
-} // namespace
-
-double gamma_q(double a, double x) {
-	if (x <= 0.0) return 1.0;
-	return x < a + 1.0 ? 1.0 - gamma_p_series(a, x) : gamma_q_fraction(a, x);
-}
-
 Chi2_Result chi2_test(const std::vector<double>& observed, const std::vector<double>& expected, double min_expected) {
 	if (observed.size() != expected.size()) throw std::invalid_argument("chi2_test: size mismatch");
 	Chi2_Result result;
@@ -81,6 +44,7 @@ Chi2_Result chi2_test(const std::vector<double>& observed, const std::vector<dou
 	result.p_value = result.dof > 0 ? gamma_q(0.5 * double(result.dof), 0.5 * result.statistic) : 1.0;
 	return result;
 }
+
 
 double binomial_z(size_t successes, size_t trials, double p) {
 	double mean = double(trials) * p;

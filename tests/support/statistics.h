@@ -1,15 +1,13 @@
 #pragma once
 // Statistics for graders. Every random test uses a fixed seed and a threshold derived from the
 // test's own significance level, corrected for the number of tests that share it (Šidák).
-#include "significance.h" // sidak, normal_cdf, normal_quantile, two_sided_z
+#include "significance.h" // sidak, normal_cdf, normal_quantile, two_sided_z, gamma_q, Poisson
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace stats {
-
-// Regularized upper incomplete gamma function Q(a, x) = Gamma(a, x) / Gamma(a).
-double gamma_q(double a, double x);
 
 struct Chi2_Result {
 	double statistic = 0.0;

@@ -8,6 +8,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <sstream>
+
 namespace {
 
 // The grade report's picture of a reference-image test: the render and the reference as `./lab
@@ -21,7 +23,8 @@ void report_images(const std::string& name, const Reference_Check& check) {
 	write_png(report::file(z_map), z_heat_map(z_scores(check.render, check.reference), c.z_critical));
 	report::attach({{"type", "image_test"}, {"scene", graded_scene_file(name)}, {"render", render},
 	                {"reference", reference}, {"z_map", z_map}, {"pass", c.pass && check.non_finite == 0},
-	                {"message", c.message}, {"non_finite", check.non_finite}, {"failed", c.failed},
+	                {"message", c.message + (c.noise.pass ? "" : "; too noisy: " + c.noise_message)},
+	                {"non_finite", check.non_finite}, {"failed", c.failed},
 	                {"tests", c.tests}, {"z_critical", c.z_critical}, {"rel_mse", c.rel_mse}});
 }
 
@@ -36,23 +39,37 @@ std::string chosen_hint(const std::string& hint, const std::vector<Image_Hint>& 
 
 } // namespace
 
-void check_renders_like_reference(const std::string& name, const std::string& hint,
-                                  const std::vector<Image_Hint>& if_failed, Integrator integrator) {
-	const Graded_Scene& graded = graded_scene(name);
+void check_renders_like_reference(const Image_Test& test) {
+	const Graded_Scene& graded = graded_scene(test.name);
 	Scene scene = load_graded(graded);
 	Render_Settings settings = scene.settings;
-	settings.integrator = integrator;
+	settings.integrator = test.integrator;
 	if (judge::secret_seed()) {
-		RNG rng = judge::case_generator("render " + name);
+		RNG rng = judge::case_generator("render " + test.name);
 		settings.seed = uint64_t(rng.integer()) << 32 | rng.integer();
 	}
 	Film film = judge::ask(protocol::Render{scene, settings, graded.view, 2});
-	Reference_Check check = compare_with_reference(graded, film, settings);
-	if (report::enabled()) report_images(name, check);
-	INFO("scenes/graded/" << name << ".json: " << check.comparison.message);
-	INFO(chosen_hint(hint, if_failed) << " Render it: ./lab render-student scenes/graded/" << name << ".json"
-	                                  << (graded.view == View::eye_light ? " --view eye" : "")
-	                                  << (integrator == Integrator::nee ? " --integrator nee" : ""));
-	CHECK(check.non_finite == 0);
-	CHECK(check.comparison.pass);
+	Reference_Check check = compare_with_reference(graded, film, settings, test.alpha);
+	if (report::enabled()) report_images(test.name, check);
+	std::ostringstream render_it;
+	render_it << " Render it: ./lab render-student scenes/graded/" << test.name << ".json"
+	          << (graded.view == View::eye_light ? " --view eye" : "")
+	          << (test.integrator == Integrator::nee ? " --integrator nee" : "");
+	{
+		INFO("scenes/graded/" << test.name << ".json: " << check.non_finite
+		                      << " samples were NaN or infinite (render with --nan-map to see where)."
+		                      << render_it.str());
+		CHECK(check.non_finite == 0);
+	}
+	{
+		INFO("scenes/graded/" << test.name << ".json: " << check.comparison.message);
+		INFO(chosen_hint(test.hint, test.if_failed) << render_it.str());
+		CHECK(check.comparison.means_pass);
+	}
+	{
+		INFO("scenes/graded/" << test.name << ".json: too noisy: " << check.comparison.noise_message << ". "
+		                      << test.if_noisy << render_it.str() << " and compare its noise with the reference's "
+		                      << "(--variance FILE.exr writes the per-pixel variance).");
+		CHECK(check.comparison.noise.pass);
+	}
 }

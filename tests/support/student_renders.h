@@ -14,12 +14,21 @@ struct Image_Hint {
 };
 
 // The grader's reference-image check as Catch2 checks: renders the graded scene `name` with the task
-// under test, compares it with the stored reference, and on failure shows where the image differs
-// and what to look at: the hints of the functions whose own test cases failed, or else `hint` (in
-// the handout's terms). `render_it` ends the message (how to see the picture). For the grade report (report_record.h) it also
+// under test, compares it with the stored reference (the means, and the render's noise against the
+// reference's), and on failure shows where the image differs and what to look at: the hints of the
+// functions whose own test cases failed, or else `hint` (in the handout's terms), and how to see
+// the picture. For the grade report (report_record.h) it also
 // writes the render, the reference and a heat map of the z-scores (z_heat_map.h) as PNGs and
 // attaches them to the test case. With a grading seed the render uses a seed drawn from it.
 // `integrator`: the estimator the render uses (task 6's extension renders with Integrator::nee).
-void check_renders_like_reference(const std::string& name, const std::string& hint,
-                                  const std::vector<Image_Hint>& if_failed = {},
-                                  Integrator integrator = Integrator::mixture);
+// `alpha`: the test case's significance, shared by its z-tests and its bound on the render's noise
+// (image_compare.h); a grader whose checks share one α passes its share.
+// `if_noisy`: what makes renders of this task noisier than the reference's, in the handout's terms.
+struct Image_Test {
+	std::string name, hint;
+	std::vector<Image_Hint> if_failed;
+	std::string if_noisy;
+	Integrator integrator = Integrator::mixture;
+	double alpha = 0.01;
+};
+void check_renders_like_reference(const Image_Test& test);

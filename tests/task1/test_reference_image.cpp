@@ -7,11 +7,15 @@
 #include <catch2/catch.hpp>
 
 TEST_CASE("the graded scene eye_bunny renders like its reference image",
-          "[task1][image][statistical][uses:generate_ray][uses:trace_pixel]") {
-	check_renders_like_reference(
-		"eye_bunny",
-		"If the picture is shifted, flipped or stretched, look at generate_ray (handout §1.2); if edges are too sharp or "
-		"too soft, at the random point in the pixel of trace_pixel (handout §1.3).",
-		{{"generate_ray", "the camera rays: a shifted, flipped or stretched picture comes from them (handout §1.2)."},
-		 {"trace_pixel", "where in the pixel the samples fall: edges too sharp or too soft (handout §1.3)."}});
+          "[estimate][task1][image][statistical][uses:generate_ray][uses:trace_pixel]") {
+	Image_Test test;
+	test.name = "eye_bunny";
+	test.hint = "If the picture is shifted, flipped or stretched, look at generate_ray (handout §1.2); if edges are too "
+	            "sharp or too soft, at the random point in the pixel of trace_pixel (handout §1.3).";
+	test.if_failed = {
+		{"generate_ray", "the camera rays: a shifted, flipped or stretched picture comes from them (handout §1.2)."},
+		{"trace_pixel", "where in the pixel the samples fall: edges too sharp or too soft (handout §1.3)."}};
+	test.if_noisy = "In the eye view only the point within the pixel varies from sample to sample: each sample must "
+	                "be trace(rng, ray) of one ray through a point of ITS pixel, (x + u1, y + u2) (handout §1.3).";
+	check_renders_like_reference(test);
 }

@@ -176,7 +176,7 @@ TEST_CASE("trace_pixel: every sample of pixel (x, y) falls inside that pixel, in
 	}
 }
 
-TEST_CASE("trace_pixel: samples are uniform over the pixel around its centre (x + 0.5, y + 0.5)", "[fn:trace_pixel][uses:generate_ray]") {
+TEST_CASE("trace_pixel: samples are uniform over the pixel around its centre (x + 0.5, y + 0.5)", "[estimate][fn:trace_pixel][uses:generate_ray]") {
 	// 10^5 samples per pixel in 8 x 8 cells (expected 1562.5 per cell): a chi-square test of
 	// uniformity, and z-tests that the mean offset is the pixel centre 0.5 (variance 1/12 per axis).
 	constexpr uint32_t N = 100000;

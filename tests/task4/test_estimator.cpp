@@ -4,10 +4,12 @@
 // albedos, radiances and render seeds are drawn from it; the closed forms hold for any of them.
 //
 // Each comparison is a z-test of an image mean against its closed form, with the standard error
-// taken from the film's own per-pixel variances (tests/support/film_statistics.h). Where the
-// estimator has zero variance (cosine sampling of a diffuse surface under uniform light returns
-// the same value for every sample) the bound reduces to float rounding, FLOAT_SLACK. Russian
+// taken from the per-pixel variances of the judge's own render of the same furnace with the
+// reference (tests/support/film_statistics.h, student_furnaces.h), never from the student's film.
+// Where the estimator has zero variance the bound reduces to float rounding, FLOAT_SLACK. Russian
 // roulette keeps the expectation, so the same bounds hold with it (its noise is in the variance).
+// Each render may not be noisier than the reference's, pixel by pixel (the sign test,
+// paired_noise.h): noise or fireflies fail every time, not by chance.
 #include "film_statistics.h"
 #include "judge.h"
 #include "furnace_scenes.h"
@@ -24,9 +26,16 @@
 
 namespace {
 
-// Every z-test of this file shares the significance level (Šidák correction over all of them).
-constexpr size_t Z_TESTS = 72; // 27 + 24 + 18 + 3, counted per TEST_CASE below
-const double Z = stats::two_sided_z(stats::sidak(0.01, Z_TESTS));
+// Every check of this file shares the significance level 0.01 (Šidák correction over all of them):
+// 72 z-tests of means (27 + 24 + 18 + 3, counted per TEST_CASE below) and the noise of each of the
+// 14 renders (3 + 4 + 6 + 1).
+constexpr size_t CHECKS = 72 + 14;
+const double ALPHA = stats::sidak(0.01, CHECKS);
+const double Z = stats::two_sided_z(ALPHA);
+
+const char* const IF_NOISY =
+	"Look for weights that can grow without bound: a division by a small pdf or cosine (the weight is f |cos| / pdf, "
+	"handout §4.2), and for a Russian roulette that cuts paths more often than the albedo says (handout §4.3)";
 
 
 // Said of a furnace that is too dark while the BSDF's own test cases pass: the usual cause then.
@@ -39,15 +48,20 @@ std::string if_too_dark() {
 	       "|hit.position| (handout §4.2)";
 }
 
-void require_finite(const Film& film) {
-	INFO(film.non_finite() << " samples were NaN or infinite (render with --nan-map to see where). Look for "
+void require_finite(const Furnace_Render& render) {
+	INFO(render.film.non_finite() << " samples were NaN or infinite (render with --nan-map to see where). Look for "
 	     "divisions by a pdf of 0 and for weights of directions that cannot be sampled (handout §4.2)");
-	REQUIRE(film.non_finite() == 0);
+	REQUIRE(render.film.non_finite() == 0);
+}
+
+// The render's noise against the reference's (one of the file's checks).
+bool check_noise(const Furnace_Render& render, const std::string& what) {
+	return check_noise(render, ALPHA, what, IF_NOISY);
 }
 
 } // namespace
 
-TEST_CASE("Furnace: a white diffuse sphere in a uniform environment renders the environment, 1, everywhere", "[fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
+TEST_CASE("Furnace: a white diffuse sphere in a uniform environment renders the environment, 1, everywhere", "[estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
 	// Albedo 1 and L_env = 1: whatever the path, light is neither created nor lost (anchors §4). A
 	// convex object never sees itself, so this holds for every max_depth >= 1.
 	std::optional<RNG> secret = secret_inputs("white furnace");
@@ -58,20 +72,24 @@ TEST_CASE("Furnace: a white diffuse sphere in a uniform environment renders the 
 	Pixel_Coverage coverage(view.options.radius, view.distance, view.v_fov, size, size);
 	for (uint32_t depth : {1u, 2u, 8u}) {
 		CAPTURE(depth);
-		Film film = render_square(scene, size, 256, depth, seed_or_public(secret, 41 + depth));
-		require_finite(film);
+		Furnace_Render render = render_square(scene, size, 256, depth, seed_or_public(secret, 41 + depth));
+		require_finite(render);
+		bool means_ok = true;
 		for (auto kind : {Pixel_Coverage::sphere, Pixel_Coverage::silhouette, Pixel_Coverage::background}) {
 			std::string what = std::string("max_depth ") + std::to_string(depth) + ", mean of the " + to_string(kind) +
 			                   " (albedo 1 under L = 1 neither gains nor loses light: each bounce's weight "
 			                   "f |cos| / pdf is 1, handout §4.2)";
 			auto select = [&](uint32_t x, uint32_t y) { return coverage(x, y) == kind; };
-			if (!check_mean_rgb(film, glm::dvec3(1.0), Z, what, select, if_too_dark())) return;
+			means_ok = check_mean_rgb(render, glm::dvec3(1.0), Z, what, select, if_too_dark());
+			if (!means_ok) break;
 		}
+		bool noise_ok = check_noise(render, "max_depth " + std::to_string(depth));
+		if (!means_ok || !noise_ok) return;
 	}
 }
 
 TEST_CASE("Furnace: a diffuse sphere of albedo rho under a uniform sky L renders rho * L for max_depth >= 1, "
-          "and black for max_depth 0", "[fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
+          "and black for max_depth 0", "[estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
 	// The sphere is convex: the first bounce sees only the sky, so its radiance is
 	// integral (rho / pi) L cos = rho * L whatever max_depth >= 1. With max_depth = 0 a camera ray
 	// may not scatter (pathtracer.h): the non-emitting sphere is black, the sky still L.
@@ -91,21 +109,22 @@ TEST_CASE("Furnace: a diffuse sphere of albedo rho under a uniform sky L renders
 	auto on_sky = [&](uint32_t x, uint32_t y) { return coverage(x, y) == Pixel_Coverage::background; };
 	for (uint32_t depth : {0u, 1u, 2u, 5u}) {
 		CAPTURE(depth);
-		Film film = render_square(scene, size, 256, depth, seed_or_public(secret, 7 + depth));
-		require_finite(film);
+		Furnace_Render render = render_square(scene, size, 256, depth, seed_or_public(secret, 7 + depth));
+		require_finite(render);
 		std::string prefix = "max_depth " + std::to_string(depth) + ", mean of the ";
 		glm::dvec3 expected = depth == 0 ? glm::dvec3(0.0) : glm::dvec3(rho) * glm::dvec3(sky);
 		std::string why = depth == 0 ? " (max_depth 0: the camera ray's hit may not scatter, so a "
 		                               "non-emitting surface is black)"
 		                             : " (rho * L: one bounce reaches the sky)";
-		bool sphere_ok = check_mean_rgb(film, expected, Z, prefix + to_string(Pixel_Coverage::sphere) + why, on_sphere,
-		                                if_too_dark());
-		bool sky_ok = check_mean_rgb(film, glm::dvec3(sky), Z, prefix + to_string(Pixel_Coverage::background), on_sky);
-		if (!sphere_ok || !sky_ok) return;
+		bool sphere_ok = check_mean_rgb(render, expected, Z, prefix + to_string(Pixel_Coverage::sphere) + why,
+		                                on_sphere, if_too_dark());
+		bool sky_ok = check_mean_rgb(render, glm::dvec3(sky), Z, prefix + to_string(Pixel_Coverage::background), on_sky);
+		bool noise_ok = check_noise(render, "max_depth " + std::to_string(depth));
+		if (!sphere_ok || !sky_ok || !noise_ok) return;
 	}
 }
 
-TEST_CASE("Furnace: inside an emitting diffuse sphere, max_depth D gives Le * (1 + rho + ... + rho^D)", "[fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
+TEST_CASE("Furnace: inside an emitting diffuse sphere, max_depth D gives Le * (1 + rho + ... + rho^D)", "[estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
 	// Every ray inside a closed sphere hits it again. Each hit emits Le and reflects rho of what
 	// arrives, so a path with at most D bounces carries Le * sum_{k=0..D} rho^k (anchors §4). An
 	// off-by-one in the depth test shifts the answer by a whole term, e.g. D = 1 gives
@@ -127,20 +146,20 @@ TEST_CASE("Furnace: inside an emitting diffuse sphere, max_depth D gives Le * (1
 	Scene scene = sphere_seen_from_inside(diffuse_material(rho, le), options, view.eye, view.target, view.v_fov);
 	for (uint32_t depth : {0u, 1u, 2u, 3u, 5u, 40u}) {
 		CAPTURE(depth);
-		Film film = render_square(scene, 24, 128, depth, seed_or_public(secret, 100 + depth));
-		require_finite(film);
+		Furnace_Render render = render_square(scene, 24, 128, depth, seed_or_public(secret, 100 + depth));
+		require_finite(render);
 		glm::dvec3 expected;
 		for (int c = 0; c < 3; c++) {
 			double sum = 0.0, power = 1.0;
 			for (uint32_t k = 0; k <= depth; k++, power *= rho[c]) sum += power;
 			expected[c] = le[c] * sum;
 		}
-		if (!check_mean_rgb(film, expected, Z,
-		                    "max_depth " + std::to_string(depth) + ": image mean, expected Le * sum_{k=0.." +
-		                        std::to_string(depth) + "} rho^k (emission of every hit, attenuated by rho per bounce; "
-		                        "max_depth counts bounces, handout §4.2)")) {
-			return;
-		}
+		bool mean_ok = check_mean_rgb(render, expected, Z,
+		                              "max_depth " + std::to_string(depth) + ": image mean, expected Le * sum_{k=0.." +
+		                                  std::to_string(depth) + "} rho^k (emission of every hit, attenuated by rho per "
+		                                  "bounce; max_depth counts bounces, handout §4.2)");
+		bool noise_ok = check_noise(render, "max_depth " + std::to_string(depth));
+		if (!mean_ok || !noise_ok) return;
 	}
 }
 
@@ -162,10 +181,10 @@ TEST_CASE("Furnace: a scene without emitters or environment renders exactly 0", 
 	Scene inside = sphere_seen_from_inside(diffuse_material(albedo), dark, inside_view.eye, inside_view.target,
 	                                       inside_view.v_fov);
 	for (const Scene* scene : {&outside, &inside}) {
-		Film film = render_square(*scene, 16, 16, 8, seed_or_public(secret, 3));
-		require_finite(film);
+		Furnace_Render render = render_square(*scene, 16, 16, 8, seed_or_public(secret, 3));
+		require_finite(render);
 		double largest = 0.0;
-		for (const Pixel_Stats& p : film.pixels) largest = std::max({largest, p.mean.x, p.mean.y, p.mean.z});
+		for (const Pixel_Stats& p : render.film.pixels) largest = std::max({largest, p.mean.x, p.mean.y, p.mean.z});
 		INFO((scene == &outside ? "a sphere seen from outside" : "the inside of a sphere")
 		     << " without any light: the brightest pixel is " << largest
 		     << ", expected exactly 0 (emission is material.emitted(out_dir), nothing else; handout §4.2)");
@@ -173,7 +192,7 @@ TEST_CASE("Furnace: a scene without emitters or environment renders exactly 0", 
 	}
 }
 
-TEST_CASE("Furnace far from the origin: new rays must leave their surface at any scale (dist_bounds offset)", "[fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
+TEST_CASE("Furnace far from the origin: new rays must leave their surface at any scale (dist_bounds offset)", "[estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
 	// The same diffuse sphere as above, moved to 10^4 from the origin. Float coordinates there are
 	// 10^-3 apart, so a hit point may lie that far inside the sphere: a new ray whose dist_bounds
 	// start at a fixed small distance (1e-4, say) hits its own surface again, an extra "bounce"
@@ -201,10 +220,11 @@ TEST_CASE("Furnace far from the origin: new rays must leave their surface at any
 	Scene scene = sphere_seen_from_outside(diffuse_material(rho), view.options, view.distance, view.v_fov);
 	Pixel_Coverage coverage(view.options.radius, view.distance, view.v_fov, size, size);
 	auto on_sphere = [&](uint32_t x, uint32_t y) { return coverage(x, y) == Pixel_Coverage::sphere; };
-	Film film = render_square(scene, size, 256, 2, seed_or_public(secret, 5));
-	require_finite(film);
-	check_mean_rgb(film, glm::dvec3(rho), Z,
+	Furnace_Render render = render_square(scene, size, 256, 2, seed_or_public(secret, 5));
+	require_finite(render);
+	check_mean_rgb(render, glm::dvec3(rho), Z,
 	               "sphere centred at " + centre + ", mean of the " + std::string(to_string(Pixel_Coverage::sphere)) +
 	                   " (expected rho * L_env)",
 	               on_sphere, if_too_dark());
+	check_noise(render, "sphere centred at " + centre);
 }

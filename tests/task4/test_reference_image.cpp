@@ -7,14 +7,19 @@
 #include <catch2/catch.hpp>
 
 TEST_CASE("the graded scene cornell_diffuse renders like its reference image",
-          "[task4][image][statistical][uses:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
-	check_renders_like_reference(
-		"cornell_diffuse",
-		"Too dark or too bright: check the estimator f * |cos| / pdf (handout §4.2) and that the Lambertian BSDF, its "
-		"sampling and its pdf agree (handout §4.1).",
-		{{"Lambertian::evaluate", "the BSDF's value albedo / pi (handout §4.1)."},
-		 {"Lambertian::pdf", "the density |cos theta| / pi the estimator divides by (handout §4.1)."},
-		 {"Lambertian::scatter", "the cosine-weighted directions (handout §4.1)."},
-		 {"shade", "the estimator: emission plus f |cos| / pdf times the next ray's radiance, and where the next ray "
-		           "starts (dist_bounds, handout §4.2)."}});
+          "[estimate][task4][image][statistical][uses:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
+	Image_Test test;
+	test.name = "cornell_diffuse";
+	test.hint = "Too dark or too bright: check the estimator f * |cos| / pdf (handout §4.2) and that the Lambertian "
+	            "BSDF, its sampling and its pdf agree (handout §4.1).";
+	test.if_failed = {
+		{"Lambertian::evaluate", "the BSDF's value albedo / pi (handout §4.1)."},
+		{"Lambertian::pdf", "the density |cos theta| / pi the estimator divides by (handout §4.1)."},
+		{"Lambertian::scatter", "the cosine-weighted directions (handout §4.1)."},
+		{"shade", "the estimator: emission plus f |cos| / pdf times the next ray's radiance, and where the next ray "
+		          "starts (dist_bounds, handout §4.2)."}};
+	test.if_noisy = "Look for weights that can grow without bound: a division by a small pdf or cosine (the weight is "
+	                "f |cos| / pdf, handout §4.2), and for a Russian roulette that cuts more often than the albedo "
+	                "says (handout §4.3).";
+	check_renders_like_reference(test);
 }

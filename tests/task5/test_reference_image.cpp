@@ -8,14 +8,17 @@
 #include <catch2/catch.hpp>
 
 TEST_CASE("the graded scene glass_balls renders like its reference image",
-          "[task5][image][statistical][uses:Mirror::scatter][uses:Glass::scatter]") {
-	check_renders_like_reference(
-		"glass_balls",
-		"The glass ball must both reflect (with probability F) and refract (handout §5.2, §5.3), the mirror reflect about "
-		"the normal (handout §5.1).",
-		{{"reflect", "the mirror's and the glass's reflections (handout §5.1)."},
-		 {"refract", "the glass's refractions, Snell's law from both sides (handout §5.2)."},
-		 {"fresnel", "how often the glass reflects (handout §5.3)."},
-		 {"Mirror::scatter", "the mirror ball (handout §5.4)."},
-		 {"Glass::scatter", "the glass ball: reflect with probability F, else refract (handout §5.4)."}});
+          "[estimate][task5][image][statistical][uses:Mirror::scatter][uses:Glass::scatter]") {
+	Image_Test test;
+	test.name = "glass_balls";
+	test.hint = "The glass ball must both reflect (with probability F) and refract (handout §5.2, §5.3), the mirror "
+	            "reflect about the normal (handout §5.1).";
+	test.if_failed = {{"reflect", "the mirror's and the glass's reflections (handout §5.1)."},
+	                  {"refract", "the glass's refractions, Snell's law from both sides (handout §5.2)."},
+	                  {"fresnel", "how often the glass reflects (handout §5.3)."},
+	                  {"Mirror::scatter", "the mirror ball (handout §5.4)."},
+	                  {"Glass::scatter", "the glass ball: reflect with probability F, else refract (handout §5.4)."}};
+	test.if_noisy = "A glass sample weighs exactly the reflectance or the transmittance: choosing by F and weighting "
+	                "by 1 / F or 1 / (1 - F) as well makes fireflies (handout §5.4).";
+	check_renders_like_reference(test);
 }

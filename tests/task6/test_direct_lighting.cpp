@@ -3,6 +3,15 @@
 // sphere), the three strategies agreeing on them, the variance the mixture saves under a small
 // light, and full renders with max_depth 1. The student's sample_incoming and trace_pixel answer
 // in one request per estimate; the other strategies are the grader's own.
+//
+// The student's estimates are z-tested with the standard error of the REFERENCE's estimator (the
+// judge's own samples of the reference mixture, as many as the student's with another seed),
+// never the student's own, and the student's samples may not be noisier than the reference's
+// (the sign test on the variances of 50 batches of each, paired_noise.h: exact for any law of the
+// samples). As many samples are enough: the reference's variance is then off by sqrt((κ - 1) / n)
+// relative, κ the samples' kurtosis (measured over 4e5 samples of the reference: 1.3 at the lit
+// point, 8 under the sphere light, 1.3 and 2.0 for the two floors), so under 1 % for n >= 5e4, and
+// the standard error by under 0.5 %, which moves the z-test's threshold by as much.
 #include "direct_lighting_estimators.h"
 #include "grader_significance.h"
 #include "judge.h"
@@ -22,31 +31,60 @@ namespace {
 const float RHO = 0.5f; // albedo of every receiver
 const BSDF GREY{BSDF_Lambertian{Spectrum{RHO}}};
 
-Sample_Moments estimate_from(const Scene& scene, const Trace& point, const std::vector<Incoming_Sample>& drawn) {
+std::vector<double> samples_from(const Scene& scene, const Trace& point, const std::vector<Incoming_Sample>& drawn) {
 	std::vector<double> samples;
 	for (const Incoming_Sample& s : drawn) samples.push_back(reflected_radiance_sample(scene, point, s));
-	return moments(samples);
+	return samples;
 }
 
 // n samples of the light reflected at `point` towards out_dir with one of the grader's strategies.
-Sample_Moments estimate(const Pathtracer& pt, Strategy strategy, const Trace& point, Vec3 out_dir, size_t n,
-                        uint64_t seed) {
+std::vector<double> estimate(const Pathtracer& pt, Strategy strategy, const Trace& point, Vec3 out_dir, size_t n,
+                             uint64_t seed) {
 	std::vector<Incoming_Sample> drawn(n);
 	RNG rng(seed);
 	for (Incoming_Sample& s : drawn) s = draw(pt, strategy, rng, point, GREY, out_dir);
-	return estimate_from(pt.scene, point, drawn);
+	return samples_from(pt.scene, point, drawn);
 }
 
 // The same with the student's sample_incoming (the mixture), in one request.
-Sample_Moments estimate_mixture(const Scene& scene, const Trace& point, Vec3 out_dir, size_t n, uint64_t seed) {
-	return estimate_from(scene, point, student_samples(scene, point, GREY, out_dir, n, seed));
+std::vector<double> estimate_mixture(const Scene& scene, const Trace& point, Vec3 out_dir, size_t n, uint64_t seed) {
+	return samples_from(scene, point, student_samples(scene, point, GREY, out_dir, n, seed));
 }
 
-// z-test of an estimate against the closed form.
-void check_estimate(const Sample_Moments& m, double expected, const std::string& what) {
+// The reference's samples of an estimate: another stream than the student's.
+uint64_t reference_seed(uint64_t seed) {
+	return seed ^ 0xa5a5a5a5a5a5a5a5ull;
+}
+
+// z-test of the grader's own estimator (the reference's) against the closed form, with its own
+// standard error.
+void check_own_estimate(const Sample_Moments& m, double expected, const std::string& what) {
 	double z = (m.mean - expected) / m.standard_error();
 	INFO(what << ": estimated " << m.mean << " +- " << m.standard_error() << " (" << m.n << " samples), closed form "
 	          << expected << ", z = " << z << " (critical " << task6::z_critical() << ")");
+	CHECK(std::abs(z) <= task6::z_critical());
+}
+
+// The student's estimate against the closed form: the student's noise against the reference's, and
+// a z-test with the reference's standard error (two checks). The noise first: a noisier estimator's
+// mean wanders beyond the reference's standard error too, and the message says so.
+void check_estimate(const std::vector<double>& student_samples, const std::vector<double>& reference_samples,
+                    double expected, const std::string& what, const std::string& if_biased = "") {
+	Paired_Noise noise = compare_noise(student_samples, reference_samples, task6::check_alpha());
+	{
+		INFO(what << ": too noisy: " << describe(noise, "batch") << ". Under a small light, light sampling "
+		          "is what keeps the noise down: a fair coin between the strategies, and the mixture's pdf for every "
+		          "direction (handout §6.1, §6.2)");
+		CHECK(noise.pass);
+	}
+	Sample_Moments student = moments(student_samples), reference = moments(reference_samples);
+	double error = standard_error(reference, student.n);
+	double z = (student.mean - expected) / error;
+	INFO(what << ": estimated " << student.mean << " +- " << error << " (" << student.n
+	          << " samples; the standard error of the reference's estimator), closed form " << expected << ", z = "
+	          << z << " (critical " << task6::z_critical() << ")"
+	          << (noise.pass ? if_biased : "; your estimator is noisier than the reference's (above), so its mean "
+	                                     "strays further"));
 	CHECK(std::abs(z) <= task6::z_critical());
 }
 
@@ -58,10 +96,22 @@ std::vector<Spectrum> render_samples(const Scene& scene, const Render_Settings& 
 	return judge::ask(request);
 }
 
-Sample_Moments pixel_moments(const std::vector<Spectrum>& values) {
+// The same samples from the reference's renderer, in the judge, with another seed.
+std::vector<Spectrum> reference_render_samples(const Scene& scene, Render_Settings settings, size_t n) {
+	settings.seed = reference_seed(settings.seed);
+	Pathtracer pt(scene, settings);
+	std::vector<Spectrum> values(n);
+	for (size_t i = 0; i < n; i++) {
+		RNG rng = RNG::for_sample(settings.seed, 0, i);
+		values[i] = pt.trace_pixel(0, 0, rng);
+	}
+	return values;
+}
+
+std::vector<double> channel_averages(const std::vector<Spectrum>& values) {
 	std::vector<double> samples;
 	for (Spectrum v : values) samples.push_back((double(v.r) + double(v.g) + double(v.b)) / 3.0);
-	return moments(samples);
+	return samples;
 }
 
 // A 1 x 1 film that sees only the floor of lit_floor (light_scenes.h).
@@ -76,7 +126,7 @@ Render_Settings one_pixel(uint64_t seed) {
 } // namespace
 
 TEST_CASE("BSDF sampling, light sampling and the mixture all estimate the light Lambert's formula gives",
-          "[task6][uses:sample_incoming]") {
+          "[estimate][task6][uses:sample_incoming]") {
 	// A tilted, off-centre receiver under a square light (public: half-side 0.5, height 1, radiance
 	// 1): L_o = rho E / pi, E from Lambert's formula for polygons.
 	Lit_Point lit = lit_point("three strategies");
@@ -90,16 +140,17 @@ TEST_CASE("BSDF sampling, light sampling and the mixture all estimate the light 
 	uint64_t bsdf_seed = sampling_seed("three strategies, BSDF", 11);
 	uint64_t lights_seed = sampling_seed("three strategies, lights", 12);
 	uint64_t mixture_seed = sampling_seed("three strategies, mixture", 13);
-	check_estimate(estimate(pt, Strategy::bsdf, point, lit.out_dir, 100000, bsdf_seed), expected,
-	               "BSDF sampling alone (the grader's own estimator: a failure here is a framework bug)");
-	check_estimate(estimate(pt, Strategy::lights, point, lit.out_dir, 100000, lights_seed), expected,
-	               "light sampling alone (the grader's own estimator: a failure here is a framework bug)");
-	check_estimate(estimate_mixture(scene, point, lit.out_dir, 100000, mixture_seed), expected,
-	               "sample_incoming's mixture, weighted attenuation * |cos| / pdf: a biased mean means the pdf "
-	               "does not match how the direction was drawn (handout §6.2)");
+	check_own_estimate(moments(estimate(pt, Strategy::bsdf, point, lit.out_dir, 100000, bsdf_seed)), expected,
+	                   "BSDF sampling alone (the grader's own estimator: a failure here is a framework bug)");
+	check_own_estimate(moments(estimate(pt, Strategy::lights, point, lit.out_dir, 100000, lights_seed)), expected,
+	                   "light sampling alone (the grader's own estimator: a failure here is a framework bug)");
+	check_estimate(estimate_mixture(scene, point, lit.out_dir, 100000, mixture_seed),
+	               estimate(pt, Strategy::mixture, point, lit.out_dir, 100000, reference_seed(mixture_seed)), expected,
+	               "sample_incoming's mixture, weighted attenuation * |cos| / pdf",
+	               ": a biased mean means the pdf does not match how the direction was drawn (handout §6.2)");
 }
 
-TEST_CASE("the mixture estimates the light from a sphere: E = pi L (r/d)^2 cos(beta)", "[task6][uses:sample_incoming]") {
+TEST_CASE("the mixture estimates the light from a sphere: E = pi L (r/d)^2 cos(beta)", "[estimate][task6][uses:sample_incoming]") {
 	// A sphere light of radius 0.5 at distance 2 along a direction 30 degrees from the normal. With a
 	// grading seed: radius 0.3 to 0.6, distance 1.5 to 3, 0 to 55 degrees from the normal, so that
 	// the whole sphere stays above the horizon (beta + asin(r / d) < 79 degrees).
@@ -114,8 +165,11 @@ TEST_CASE("the mixture estimates the light from a sphere: E = pi L (r/d)^2 cos(b
 	scene.commit();
 	Vec3 normal{float(std::sin(beta)), float(std::cos(beta)), 0.0f};
 	double expected = RHO * closed_form::sphere_irradiance(radius, distance, std::cos(beta), 1.0) / M_PI;
-	check_estimate(estimate_mixture(scene, surface_point(Vec3{0.0f}, normal), normal, 100000,
-	                                sampling_seed("sphere light", 21)),
+	Trace point = surface_point(Vec3{0.0f}, normal);
+	uint64_t seed = sampling_seed("sphere light", 21);
+	check_estimate(estimate_mixture(scene, point, normal, 100000, seed),
+	               estimate(Pathtracer(scene, Render_Settings{}), Strategy::mixture, point, normal, 100000,
+	                        reference_seed(seed)),
 	               expected, "sample_incoming's mixture under a sphere light (handout §6.2)");
 }
 
@@ -127,8 +181,9 @@ TEST_CASE("under a small light, the mixture has a lower variance than BSDF sampl
 	Pathtracer pt(scene, Render_Settings{});
 	Trace point = surface_point(Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f});
 	Vec3 out_dir{0.0f, 1.0f, 0.0f};
-	Sample_Moments bsdf = estimate(pt, Strategy::bsdf, point, out_dir, 100000, sampling_seed("variance, BSDF", 31));
-	Sample_Moments mixture = estimate_mixture(scene, point, out_dir, 100000, sampling_seed("variance, mixture", 32));
+	Sample_Moments bsdf = moments(estimate(pt, Strategy::bsdf, point, out_dir, 100000, sampling_seed("variance, BSDF", 31)));
+	Sample_Moments mixture =
+		moments(estimate_mixture(scene, point, out_dir, 100000, sampling_seed("variance, mixture", 32)));
 	double z = (bsdf.variance - mixture.variance) /
 	           std::sqrt(bsdf.variance_of_variance() + mixture.variance_of_variance());
 	double critical = stats::normal_quantile(1.0 - task6::check_alpha());
@@ -139,7 +194,7 @@ TEST_CASE("under a small light, the mixture has a lower variance than BSDF sampl
 	CHECK(z > critical);
 }
 
-TEST_CASE("a diffuse floor under a square light renders as rho E / pi (max_depth 1)", "[task6][uses:sample_incoming]") {
+TEST_CASE("a diffuse floor under a square light renders as rho E / pi (max_depth 1)", "[estimate][task6][uses:sample_incoming]") {
 	// Lambert's formula for a parallel square of half-side a at height h, under its centre:
 	// a/h = 0.5 -> E = 0.752275 L, a/h = 1 -> E = 1.740840 L (light_closed_forms.h). With a grading
 	// seed, two squares of half-side 0.3 to 1.2 at height 0.7 to 1.5, of radiance 0.5 to 3.
@@ -161,7 +216,8 @@ TEST_CASE("a diffuse floor under a square light renders as rho E / pi (max_depth
 		Scene scene = lit_floor(RHO, c.half_side, c.height, Spectrum{c.radiance}, Vec3{0.6f, 0.4f, 0.5f});
 		scene.commit();
 		double e = closed_form::centred_square_irradiance(c.half_side, c.height, c.radiance);
-		check_estimate(pixel_moments(render_samples(scene, one_pixel(c.seed), 50000)), RHO * e / M_PI,
+		check_estimate(channel_averages(render_samples(scene, one_pixel(c.seed), 50000)),
+		               channel_averages(reference_render_samples(scene, one_pixel(c.seed), 50000)), RHO * e / M_PI,
 		               "pixel under a square light with a/h = " + std::to_string(c.half_side / c.height) +
 		                   ", L = " + std::to_string(c.radiance) + " (the renderer with your sample_incoming, "
 		                   "handout §6.2)");

@@ -2,15 +2,21 @@
 // traced with the mixture of BSDF and light sampling.
 // The render is compared with the stored reference pixel by pixel, by a z-test that knows the noise
 // of both (framework/image_compare.h); scenes/graded/references/ holds the reference.
+#include "grader_significance.h"
 #include "student_renders.h"
 
 #include <catch2/catch.hpp>
 
 TEST_CASE("the graded scene cornell_small_light renders like its reference image",
-          "[task6][image][statistical][uses:sample_incoming]") {
-	check_renders_like_reference(
-		"cornell_small_light",
-		"The mixture's pdf must be 1/2 p_bsdf + 1/2 p_lights for EVERY direction, whichever strategy drew it (handout "
-		"§6.2).",
-		{{"sample_incoming", "the mixture's directions and their density (handout §6.2, §6.3)."}});
+          "[estimate][task6][image][statistical][uses:sample_incoming]") {
+	Image_Test test;
+	test.name = "cornell_small_light";
+	test.hint = "The mixture's pdf must be 1/2 p_bsdf + 1/2 p_lights for EVERY direction, whichever strategy drew it "
+	            "(handout §6.2).";
+	test.if_failed = {{"sample_incoming", "the mixture's directions and their density (handout §6.2, §6.3)."}};
+	test.if_noisy = "Under a small light, light sampling is what keeps the noise down: a fair coin between the "
+	                "strategies, and the mixture's pdf for every direction, never one strategy's alone (handout §6.1, "
+	                "§6.2).";
+	test.alpha = task6::image_test_alpha();
+	check_renders_like_reference(test);
 }

@@ -4,6 +4,14 @@
 // the student's power_heuristic) it estimates Lambert's closed form; renders match closed forms and
 // the stored reference image; and next-event estimation is less noisy than BSDF sampling. The
 // student's functions answer in one request per estimate (student_calls.h); the rest is the grader's.
+//
+// Every z-test takes its standard error from the REFERENCE's estimator (the judge's own samples of
+// the reference's estimate_direct, power_heuristic and NEE integrator, as many as the student's
+// with another seed), never from the student's samples, and the student's samples may not be
+// noisier than the reference's (the sign test on the variances of 50 batches of each,
+// paired_noise.h: exact for any law of the samples). As many samples are enough: the reference's
+// variance is off by sqrt((κ - 1) / n) relative, κ the samples' kurtosis (the NEE floors' 2.4 and
+// 2.8, measured over 5e4 samples), about 1 % for n >= 5e4, so the standard error by half that.
 #include "direct_lighting_estimators.h"
 #include "frame.h"
 #include "light_closed_forms.h"
@@ -55,9 +63,14 @@ double light_share(const Pathtracer& pt, RNG& rng, const Trace& point, Vec3 out_
 	return channel_average(f * light.radiance) * std::abs(double(in_local.y)) * weight / p_light;
 }
 
+// Whose power_heuristic weighs the BSDF-sampled share.
+enum class Weights { student, reference };
+
 // n samples of the BSDF-sampled share: emission found along a BSDF sample, weighted by the
-// student's power_heuristic (one request for all n) against the light density of what the ray found.
-std::vector<double> bsdf_share(const Pathtracer& pt, const Trace& point, Vec3 out_dir, size_t n, uint64_t seed) {
+// student's power_heuristic (one request for all n) or the reference's, against the light density
+// of what the ray found.
+std::vector<double> bsdf_share(const Pathtracer& pt, const Trace& point, Vec3 out_dir, size_t n, uint64_t seed,
+                               Weights whose = Weights::student) {
 	std::vector<double> values(n);
 	std::vector<Vec2> densities(n); // (BSDF pdf, light pdf) of each sample
 	RNG rng(seed);
@@ -73,9 +86,47 @@ std::vector<double> bsdf_share(const Pathtracer& pt, const Trace& point, Vec3 ou
 		values[i] = pdf > 0.0f ? channel_average(s.attenuation * arriving) * std::abs(s.direction.y) / pdf : 0.0;
 		densities[i] = Vec2{pdf, light_pdf(pt, ray, hit)};
 	}
-	std::vector<float> weights = student_power_heuristic(densities);
+	std::vector<float> weights(n);
+	if (whose == Weights::student) weights = student_power_heuristic(densities);
+	else for (size_t i = 0; i < n; i++) weights[i] = power_heuristic(densities[i].x, densities[i].y);
 	for (size_t i = 0; i < n; i++) values[i] *= weights[i];
 	return values;
+}
+
+// The reference's samples: another stream than the student's.
+uint64_t reference_seed(uint64_t seed) {
+	return seed ^ 0xa5a5a5a5a5a5a5a5ull;
+}
+
+// n values of the reference's estimate_direct at `point`, from one generator (as student_direct_light).
+std::vector<double> reference_direct_light(const Pathtracer& pt, const Trace& point, Vec3 out_dir, size_t n,
+                                           uint64_t seed) {
+	RNG rng(reference_seed(seed));
+	std::vector<double> values(n);
+	for (double& v : values) v = channel_average(pt.estimate_direct(rng, point, GREY, out_dir));
+	return values;
+}
+
+// n samples of pixel (0, 0) by the reference's NEE integrator (as student_pixel_samples).
+std::vector<double> reference_pixel_samples(const Scene& scene, Render_Settings settings, size_t n) {
+	settings.seed = reference_seed(settings.seed);
+	Pathtracer pt(scene, settings);
+	std::vector<double> values(n);
+	for (size_t i = 0; i < n; i++) {
+		RNG rng = RNG::for_sample(settings.seed, 0, i, settings.sampler);
+		values[i] = channel_average(pt.trace_pixel(0, 0, rng));
+	}
+	return values;
+}
+
+// The student's noise against the reference's (one check); whether it passed.
+bool check_noise(const std::vector<double>& student, const std::vector<double>& reference, const std::string& what) {
+	Paired_Noise noise = compare_noise(student, reference, task6_nee::check_alpha());
+	INFO(what << ": too noisy: " << describe(noise, "batch") << ". Both shares weighted by the power "
+	          "heuristic keep a light sample's weight bounded: f L |cos| w / pdf with w = power_heuristic(light pdf, "
+	          "BSDF pdf) (handout §6.5)");
+	CHECK(noise.pass);
+	return noise.pass;
 }
 
 std::vector<double> sum(const std::vector<double>& a, const std::vector<double>& b) {
@@ -84,10 +135,18 @@ std::vector<double> sum(const std::vector<double>& a, const std::vector<double>&
 	return s;
 }
 
-void check_closed_form(const Sample_Moments& m, double expected, const std::string& what) {
-	double z = (m.mean - expected) / m.standard_error();
-	INFO(what << ": estimated " << m.mean << " +- " << m.standard_error() << " (" << m.n << " samples), closed form "
-	          << expected << ", z = " << z << " (critical " << task6_nee::z_critical() << ")");
+// The student's estimate against the closed form with the reference's standard error, and its noise
+// against the reference's (two checks).
+void check_closed_form(const std::vector<double>& student_samples, const std::vector<double>& reference_samples,
+                       double expected, const std::string& what) {
+	bool quiet = check_noise(student_samples, reference_samples, what); // first: noise makes the mean stray
+	Sample_Moments student = moments(student_samples), reference = moments(reference_samples);
+	double error = standard_error(reference, student.n);
+	double z = (student.mean - expected) / error;
+	INFO(what << ": estimated " << student.mean << " +- " << error << " (" << student.n
+	          << " samples; the standard error of the reference's estimator), closed form " << expected << ", z = "
+	          << z << " (critical " << task6_nee::z_critical() << ")"
+	          << (quiet ? "" : "; your estimator is noisier than the reference's (above), so its mean strays further"));
 	CHECK(std::abs(z) <= task6_nee::z_critical());
 }
 
@@ -128,28 +187,33 @@ TEST_CASE("estimate_direct gives exactly 0 for a light behind the surface", "[ta
 }
 
 TEST_CASE("estimate_direct's mean is the light-sampled share the power heuristic gives it",
-          "[task6_nee][fn:estimate_direct]") {
+          "[estimate][task6_nee][fn:estimate_direct]") {
 	// Two-sample z-test against the grader's own light samples, weighted by p_l^2 / (p_l^2 + p_b^2).
 	Scene scene = ceiling_light_scene(0.5f, 1.0f);
 	Pathtracer pt(scene, nee_settings());
 	Trace point = surface_point(POINT, NORMAL);
-	Sample_Moments student = moments(student_direct_light(pt.scene, pt.settings, point, GREY, OUT_DIR, 100000, 11));
+	std::vector<double> student_samples = student_direct_light(pt.scene, pt.settings, point, GREY, OUT_DIR, 100000, 11);
 	std::vector<double> own(100000);
 	RNG rng(12);
 	for (double& v : own) v = light_share(pt, rng, point, OUT_DIR);
-	Sample_Moments grader = moments(own);
-	double z = (student.mean - grader.mean) / std::hypot(student.standard_error(), grader.standard_error());
-	INFO("estimate_direct averaged " << student.mean << " +- " << student.standard_error()
-	                                 << "; light samples weighted by the power heuristic average " << grader.mean
-	                                 << " +- " << grader.standard_error() << ", z = " << z << " (critical "
-	                                 << task6_nee::z_critical()
-	                                 << "). Return f * L * |cos| * w / pdf with w = power_heuristic(light pdf, BSDF "
-	                                    "pdf) (handout §6.5)");
-	CHECK(std::abs(z) <= task6_nee::z_critical());
+	Sample_Moments student = moments(student_samples), grader = moments(own);
+	// Both means estimate the same value if the student's is right; the difference's standard error
+	// is the grader's per-sample deviation over both sample counts (never the student's own).
+	double error = std::sqrt(grader.variance * (1.0 / double(student.n) + 1.0 / double(grader.n)));
+	double z = (student.mean - grader.mean) / error;
+	{
+		INFO("estimate_direct averaged " << student.mean << "; light samples weighted by the power heuristic average "
+		                                 << grader.mean << ", difference +- " << error << ", z = " << z
+		                                 << " (critical " << task6_nee::z_critical()
+		                                 << "). Return f * L * |cos| * w / pdf with w = power_heuristic(light pdf, "
+		                                    "BSDF pdf) (handout §6.5)");
+		CHECK(std::abs(z) <= task6_nee::z_critical());
+	}
+	check_noise(student_samples, own, "estimate_direct at a tilted receiver under a square light");
 }
 
 TEST_CASE("light-sampled and BSDF-sampled shares add up to Lambert's formula",
-          "[task6_nee][uses:estimate_direct][uses:power_heuristic]") {
+          "[estimate][task6_nee][uses:estimate_direct][uses:power_heuristic]") {
 	SECTION("a square light over a tilted receiver") {
 		Scene scene = ceiling_light_scene(0.5f, 1.0f);
 		Pathtracer pt(scene, nee_settings());
@@ -158,7 +222,9 @@ TEST_CASE("light-sampled and BSDF-sampled shares add up to Lambert's formula",
 		                                           glm::dvec3(NORMAL), 1.0);
 		std::vector<double> both = sum(student_direct_light(pt.scene, pt.settings, point, GREY, OUT_DIR, 100000, 21),
 		                               bsdf_share(pt, point, OUT_DIR, 100000, 22));
-		check_closed_form(moments(both), RHO * e / M_PI,
+		std::vector<double> reference = sum(reference_direct_light(pt, point, OUT_DIR, 100000, 21),
+		                                    bsdf_share(pt, point, OUT_DIR, 100000, reference_seed(22), Weights::reference));
+		check_closed_form(both, reference, RHO * e / M_PI,
 		                  "estimate_direct + BSDF samples weighted by power_heuristic, square light: each share must "
 		                  "be weighted by the heuristic of its own density against the other's (handout §6.5)");
 	}
@@ -173,14 +239,16 @@ TEST_CASE("light-sampled and BSDF-sampled shares add up to Lambert's formula",
 		double expected = RHO * closed_form::sphere_irradiance(0.5, 2.0, std::cos(M_PI / 6.0), 1.0) / M_PI;
 		std::vector<double> both = sum(student_direct_light(pt.scene, pt.settings, point, GREY, normal, 100000, 23),
 		                               bsdf_share(pt, point, normal, 100000, 24));
-		check_closed_form(moments(both), expected,
+		std::vector<double> reference = sum(reference_direct_light(pt, point, normal, 100000, 23),
+		                                    bsdf_share(pt, point, normal, 100000, reference_seed(24), Weights::reference));
+		check_closed_form(both, reference, expected,
 		                  "estimate_direct + BSDF samples weighted by power_heuristic, sphere light (half of its "
 		                  "points face away: their shadow rays are blocked by the sphere itself; handout §6.5)");
 	}
 }
 
 TEST_CASE("the NEE integrator renders a floor under a square light as rho E / pi (max_depth 1)",
-          "[task6_nee][uses:estimate_direct][uses:power_heuristic]") {
+          "[estimate][task6_nee][uses:estimate_direct][uses:power_heuristic]") {
 	struct Case {
 		float half_side, height, radiance;
 		uint64_t seed;
@@ -190,7 +258,8 @@ TEST_CASE("the NEE integrator renders a floor under a square light as rho E / pi
 		scene.commit();
 		Pathtracer pt(scene, one_pixel(c.seed));
 		double e = closed_form::centred_square_irradiance(c.half_side, c.height, c.radiance);
-		check_closed_form(moments(student_pixel_samples(pt.scene, pt.settings, 50000)), RHO * e / M_PI,
+		check_closed_form(student_pixel_samples(pt.scene, pt.settings, 50000),
+		                  reference_pixel_samples(pt.scene, pt.settings, 50000), RHO * e / M_PI,
 		                  "pixel under a square light with a/h = " + std::to_string(c.half_side / c.height) +
 		                      " by --integrator nee with your estimate_direct and power_heuristic (handout §6.5)");
 	}
@@ -219,11 +288,16 @@ TEST_CASE("under a small light, next-event estimation is less noisy than BSDF sa
 }
 
 TEST_CASE("the NEE integrator renders cornell_small_light like its reference image",
-          "[task6_nee][image][statistical][uses:estimate_direct][uses:power_heuristic]") {
-	check_renders_like_reference("cornell_small_light",
-	                             "--integrator nee with your estimate_direct and power_heuristic: each share must be "
-	                             "weighted by the power heuristic of its own density against the other's (handout §6.5).",
-	                             {{"power_heuristic", "the weights of the two strategies (handout §6.5)."},
-	                              {"estimate_direct", "the light-sampled share and its shadow ray (handout §6.5)."}},
-	                             Integrator::nee);
+          "[estimate][task6_nee][image][statistical][uses:estimate_direct][uses:power_heuristic]") {
+	Image_Test test;
+	test.name = "cornell_small_light";
+	test.hint = "--integrator nee with your estimate_direct and power_heuristic: each share must be weighted by the "
+	            "power heuristic of its own density against the other's (handout §6.5).";
+	test.if_failed = {{"power_heuristic", "the weights of the two strategies (handout §6.5)."},
+	                  {"estimate_direct", "the light-sampled share and its shadow ray (handout §6.5)."}};
+	test.if_noisy = "Both shares weighted by the power heuristic keep a light sample's weight bounded: f L |cos| w / pdf "
+	                "with w = power_heuristic(light pdf, BSDF pdf) (handout §6.5).";
+	test.integrator = Integrator::nee;
+	test.alpha = task6_nee::image_test_alpha();
+	check_renders_like_reference(test);
 }

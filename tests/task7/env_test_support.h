@@ -7,8 +7,10 @@
 #include "env_light.h"
 #include "judge.h"
 #include "rng.h"
+#include "sample_moments.h"
 #include "statistics.h"
 
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -18,18 +20,25 @@ namespace env_test {
 
 // Significance of every statistical test of the grader, and how many tests share it (Šidák):
 // chi-square tests: the uniform sampler and four importance-sampled maps (test_uniform.cpp,
-// test_importance.cpp); z-tests: the constant map's three channels (test_importance.cpp), two
-// one-texel maps (test_bright_texel.cpp), and three channels of three groups of pixels in
-// test_render.cpp (sky and sphere under Env_Map, sphere under Env_Constant).
+// test_importance.cpp); the estimates: z-tests of the constant map's three channels
+// (test_importance.cpp), two one-texel maps (test_bright_texel.cpp), and three channels of three
+// groups of pixels in test_render.cpp (sky and sphere under Env_Map, sphere under Env_Constant),
+// and the noise of each of those five estimates (paired_noise.h). z-tests take their
+// standard error from the reference's estimator (reference_weights below, the judge's render in
+// test_render.cpp), never from the student's samples.
 constexpr double ALPHA = 0.01;
 constexpr size_t CHI2_TESTS = 5;
 constexpr size_t Z_TESTS = 3 + 2 + 9;
+constexpr size_t NOISE_CHECKS = 1 + 2 + 2;
 
 inline double chi2_alpha() {
 	return stats::sidak(ALPHA, CHI2_TESTS);
 }
+inline double noise_alpha() {
+	return stats::sidak(ALPHA, Z_TESTS + NOISE_CHECKS);
+}
 inline double z_critical() {
-	return stats::two_sided_z(stats::sidak(ALPHA, Z_TESTS));
+	return stats::two_sided_z(noise_alpha());
 }
 
 // ---- Inputs ----------------------------------------------------------------------------------------
@@ -85,6 +94,26 @@ inline Env_Samples student_env_samples(const HDR_Image& image, bool importance_s
 	result.pdfs = at.queries.pdfs;
 	result.radiance = at.radiance;
 	return result;
+}
+
+// ---- The reference's estimates ---------------------------------------------------------------------
+
+// The weights L / pdf per channel of n importance samples of the reference's Env_Map(image) (the
+// judge links the reference of every task), from the points of `seed` but another stream than the
+// student's; a sample of pdf 0 weighs 0, as a renderer skips it. As many samples as the student's
+// are enough: the reference's variance is then off by sqrt((κ - 1) / n) relative, κ the weights'
+// kurtosis (measured over 2e5 samples: 36 for the constant map, 27 and 14 for the bright texels),
+// 1.3 % at most for n = 2e5, so the standard error by under 0.7 %.
+inline std::array<std::vector<double>, 3> reference_weights(const HDR_Image& image, uint64_t seed, size_t n) {
+	Env_Map map(image, true);
+	std::array<std::vector<double>, 3> weights;
+	for (Vec2 u : unit_points(seed ^ 0xa5a5a5a5a5a5a5a5ull, n)) {
+		Vec3 d = map.sample(u);
+		float pdf = map.pdf(d);
+		Spectrum w = pdf > 0.0f ? map.evaluate(d) / pdf : Spectrum{0.0f};
+		for (int c = 0; c < 3; c++) weights[c].push_back(double(w[c]));
+	}
+	return weights;
 }
 
 // ---- Messages ------------------------------------------------------------------------------------

@@ -172,7 +172,7 @@ TEST_CASE("Image::sample draws directions with the density Image::pdf (chi-squar
 	}
 }
 
-TEST_CASE("a constant map: the weights L / pdf average 4 pi L and stay below twice that", "[task7][importance][statistical][uses:Image::sample][uses:Image::pdf]") {
+TEST_CASE("a constant map: the weights L / pdf average 4 pi L and stay below twice that", "[estimate][task7][importance][statistical][uses:Image::sample][uses:Image::pdf]") {
 	// E[L / pdf] = integral of L over the sphere = 4 pi L for any correct pdf (three of the grader's
 	// z-tests). A weight is 4 pi L sin(theta) / sin(theta_row) up to the table's normalization;
 	// sin(theta) / sin(theta_row) < 2 in the rows at the poles (sin(2x) / sin(x) = 2 cos(x) with the
@@ -184,8 +184,10 @@ TEST_CASE("a constant map: the weights L / pdf average 4 pi L and stay below twi
 		L = Spectrum{0.2f + 2.8f * rng.unit(), 0.2f + 2.8f * rng.unit(), 0.2f + 2.8f * rng.unit()};
 	}
 	const size_t N = 200000;
-	Env_Samples samples = student_env_samples(HDR_Image(32, 16, L), true, unit_points(sampling_seed("constant map", 76), N));
-	glm::dvec3 sum{0.0}, sum2{0.0};
+	const HDR_Image map(32, 16, L);
+	const uint64_t seed = sampling_seed("constant map", 76);
+	Env_Samples samples = student_env_samples(map, true, unit_points(seed, N));
+	std::array<std::vector<double>, 3> weights;
 	size_t not_finite = 0, too_large = 0;
 	std::string first_large;
 	for (size_t n = 0; n < N; n++) {
@@ -199,8 +201,7 @@ TEST_CASE("a constant map: the weights L / pdf average 4 pi L and stay below twi
 		if (!(weight.g <= 2.0f * 4.0f * PI_F * L.g * (1.0f + 1e-4f))) {
 			if (too_large++ == 0) first_large = "direction " + str(d) + " with pdf " + std::to_string(pdf) + ", weight " + str(weight);
 		}
-		sum += glm::dvec3(weight);
-		sum2 += glm::dvec3(weight) * glm::dvec3(weight);
+		for (int c = 0; c < 3; c++) weights[c].push_back(double(weight[c]));
 	}
 	{
 		INFO("L / pdf was not finite for " << not_finite << " importance samples of a constant map (handout §7.4)");
@@ -211,15 +212,24 @@ TEST_CASE("a constant map: the weights L / pdf average 4 pi L and stay below twi
 		               << ". Weight the texels by sin(theta) of their row (handout §7.4)");
 		CHECK(too_large == 0);
 	}
+	if (not_finite > 0) return; // the means and the noise would mislead
+	std::array<std::vector<double>, 3> reference = reference_weights(map, seed, N);
+	std::array<double, 3> rounding;
 	for (int c = 0; c < 3; c++) {
-		double mean = sum[c] / N, variance = (sum2[c] / N - mean * mean) * N / (N - 1.0);
-		double expected = 4.0 * M_PI * L[c], standard_error = std::sqrt(variance / N);
-		double allowed = z_critical() * standard_error + 1e-5 * expected; // plus float rounding
+		double mean = moments(weights[c]).mean, expected = 4.0 * M_PI * L[c];
+		double error = standard_error(moments(reference[c]), N);
+		rounding[c] = 1e-5 * expected;
+		double allowed = z_critical() * error + rounding[c]; // plus float rounding
 		INFO("channel " << c << ": mean of L / pdf over " << N << " importance samples of a constant map is " << mean
 		                << ", expected 4 pi L = " << expected << " (allowed difference " << allowed << ", "
-		                << z_critical() << " standard errors). sample, pdf and evaluate must agree (handout §7.4)");
+		                << z_critical() << " standard errors of the reference's estimate). sample, pdf and evaluate "
+		                << "must agree (handout §7.4)");
 		CHECK(std::abs(mean - expected) <= allowed);
 	}
+	Paired_Noise noise = compare_noise(weights, reference, noise_alpha(), rounding);
+	INFO("importance samples of a constant map: too noisy: " << describe(noise, "batch")
+	     << ". The table must weight texels by luminance * sin(theta) and pdf must be what sample draws (handout §7.4)");
+	CHECK(noise.pass);
 }
 
 TEST_CASE("a black map still gives valid samples and a normalized pdf", "[task7][importance][fn:Image (tables)][uses:Image::sample][uses:Image::pdf]") {

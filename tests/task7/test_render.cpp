@@ -1,9 +1,12 @@
 // Task 7 grader, handout §7.5: a diffuse sphere under a constant sky. A convex object cannot see
 // itself, so after one bounce every path ends in the sky: the sphere's pixels are exactly albedo * L
-// (a furnace: the closed form holds), whatever the sampling, and the sky's pixels are L.
+// (a furnace: the closed form holds), whatever the sampling, and the sky's pixels are L. Standard
+// errors and the bound on the render's noise come from the judge's own render with the reference
+// (student_furnaces.h).
 #include "env_test_support.h"
 #include "film_statistics.h"
 #include "furnace_scenes.h"
+#include "student_furnaces.h"
 
 #include <catch2/catch.hpp>
 
@@ -29,21 +32,18 @@ Colours colours(const std::string& what) {
 	return c;
 }
 
-// The student's render (in the subject, with the student's environment code) of the sphere.
-Film render_sphere(const Environment& environment, const Colours& c) {
+// The student's render (in the subject, with the student's environment code) of the sphere, and the
+// reference's (student_furnaces.h).
+Furnace_Render render_sphere(const Environment& environment, const Colours& c) {
 	Furnace_Options options;
 	options.environment = c.sky;
 	Scene scene = sphere_seen_from_outside(diffuse_material(c.albedo), options, DISTANCE, V_FOV);
 	scene.environment = environment;
-	Render_Settings settings;
-	settings.width = settings.height = SIZE;
-	settings.samples = 64;
-	settings.max_depth = 4;
-	settings.seed = c.seed;
-	return judge::ask(protocol::Render{scene, settings, View::path, 2});
+	return render_square(scene, SIZE, 64, 4, c.seed);
 }
 
-void check_channels(const Film& film, const Spectrum& expected, Pixel_Coverage::Kind kind, const std::string& what) {
+void check_channels(const Furnace_Render& film, const Spectrum& expected, Pixel_Coverage::Kind kind,
+                    const std::string& what) {
 	Pixel_Coverage coverage(1.0f, DISTANCE, V_FOV, SIZE, SIZE);
 	auto select = [&](uint32_t x, uint32_t y) { return coverage(x, y) == kind; };
 	for (int c = 0; c < 3; c++) {
@@ -55,14 +55,14 @@ void check_channels(const Film& film, const Spectrum& expected, Pixel_Coverage::
 }
 } // namespace
 
-TEST_CASE("a diffuse sphere under a constant Env_Map renders albedo * L", "[task7][render][statistical][uses:Env_Map::sample][uses:Env_Map::pdf][uses:Env_Map::evaluate][uses:Uniform::sample]") {
+TEST_CASE("a diffuse sphere under a constant Env_Map renders albedo * L", "[estimate][task7][render][statistical][uses:Env_Map::sample][uses:Env_Map::pdf][uses:Env_Map::evaluate][uses:Uniform::sample]") {
 	// The image is constant, so evaluate returns L in every direction, and with light sampling
 	// (task 6) the path tracer also draws directions with Env_Map::sample and weighs them with pdf.
 	Colours c = colours("render under Env_Map");
-	Film film = render_sphere(Env_Map(HDR_Image(16, 8, c.sky), true), c);
+	Furnace_Render film = render_sphere(Env_Map(HDR_Image(16, 8, c.sky), true), c);
 	{
 		INFO("non-finite samples in the render: look for a division by a zero pdf or sin(theta) (handout §7.4)");
-		CHECK(film.non_finite() == 0);
+		CHECK(film.film.non_finite() == 0);
 	}
 	check_channels(film, c.sky, Pixel_Coverage::background,
 	               "sky seen directly, expected L: Env_Map::evaluate of a constant image must return it (handout §7.3)");
@@ -70,17 +70,22 @@ TEST_CASE("a diffuse sphere under a constant Env_Map renders albedo * L", "[task
 	               Pixel_Coverage::sphere,
 	               "diffuse sphere under a constant Env_Map, expected albedo * L: evaluate, sample and pdf must agree "
 	               "(handout §7.3, §7.4)");
+	check_noise(film, noise_alpha(), "diffuse sphere under a constant Env_Map",
+	            "Weights L / pdf must stay bounded: sample, pdf and evaluate must describe the same density "
+	            "(handout §7.4)");
 }
 
-TEST_CASE("a diffuse sphere under Env_Constant renders albedo * L", "[task7][render][statistical][uses:Env_Map::sample][uses:Env_Map::pdf][uses:Env_Map::evaluate][uses:Uniform::sample]") {
+TEST_CASE("a diffuse sphere under Env_Constant renders albedo * L", "[estimate][task7][render][statistical][uses:Env_Map::sample][uses:Env_Map::pdf][uses:Env_Map::evaluate][uses:Uniform::sample]") {
 	// Env_Constant samples with Samplers::Sphere::Uniform (used when the path tracer samples lights).
 	Colours c = colours("render under Env_Constant");
-	Film film = render_sphere(Env_Constant{c.sky}, c);
+	Furnace_Render film = render_sphere(Env_Constant{c.sky}, c);
 	{
 		INFO("non-finite samples in the render (handout §7.2)");
-		CHECK(film.non_finite() == 0);
+		CHECK(film.film.non_finite() == 0);
 	}
 	check_channels(film, c.albedo * c.sky, Pixel_Coverage::sphere,
 	               "diffuse sphere under Env_Constant, expected albedo * L: Uniform::sample and pdf must agree "
 	               "(handout §7.2)");
+	check_noise(film, noise_alpha(), "diffuse sphere under Env_Constant",
+	            "Uniform directions have the constant density 1 / (4 pi): sample and pdf must agree (handout §7.2)");
 }

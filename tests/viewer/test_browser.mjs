@@ -148,7 +148,8 @@ try {
 		return light / (data.length / 4);
 	});
 	check(pale > 0.99, `the z-map of the same code on both sides is pale (noise only): ${(100 * pale).toFixed(2)} % of pixels`);
-	check((await page.textContent("#verdict")).startsWith("PASS"), "the grader's verdict is PASS for the same code");
+	const verdict = await page.textContent("#verdict");
+	check(verdict.startsWith("PASS"), `the grader's verdict is PASS for the same code: ${verdict}`);
 	await page.screenshot({path: path.join(args.out, "viewer_z_map.png"), fullPage: false});
 	await page.selectOption("#layout", "side");
 
