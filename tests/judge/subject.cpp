@@ -198,17 +198,21 @@ void Subject::refuse_after_hangs(Kind kind) const {
 	}
 }
 
-std::string Subject::exchange(Kind kind, const std::string& payload) {
+std::string Subject::exchange(Kind kind, const std::string& payload, const Questions& questions) {
 	if (pid <= 0) throw Subject_Failure("judge: the subject is no longer running");
 	refuse_after_hangs(kind);
 	uint32_t number = ++sequence;
-	std::string message;
-	auto append = [&](const auto& value) { message.append(reinterpret_cast<const char*>(&value), sizeof value); };
-	append(protocol::MAGIC);
-	append(uint32_t(kind));
-	append(number);
-	append(uint64_t(payload.size()));
-	message += payload;
+	// A request, or a reply to a question: the request's header and the payload.
+	auto message_of = [&](const std::string& body) {
+		std::string message;
+		auto append = [&](const auto& value) { message.append(reinterpret_cast<const char*>(&value), sizeof value); };
+		append(protocol::MAGIC);
+		append(uint32_t(kind));
+		append(number);
+		append(uint64_t(body.size()));
+		return message + body;
+	};
+	std::string message = message_of(payload);
 	if (!save_requests.empty()) std::ofstream(save_requests, std::ios::binary | std::ios::app) << message;
 
 	auto request_deadline = std::min(deadline, Clock::now() + std::chrono::duration_cast<Clock::duration>(
@@ -221,13 +225,16 @@ std::string Subject::exchange(Kind kind, const std::string& payload) {
 		hangs.seconds += std::chrono::duration<double>(Clock::now() - asked).count();
 		fail(kind, "did not answer in time");
 	};
-	for (size_t sent = 0; sent < message.size();) {
-		if (!wait_writable(to_subject, request_deadline)) time_is_up();
-		ssize_t n = write(to_subject, message.data() + sent, message.size() - sent);
-		if (n < 0 && (errno == EAGAIN || errno == EINTR)) continue;
-		if (n <= 0) fail(kind, "stopped reading requests");
-		sent += size_t(n);
-	}
+	auto send = [&](const std::string& bytes) {
+		for (size_t sent = 0; sent < bytes.size();) {
+			if (!wait_writable(to_subject, request_deadline)) time_is_up();
+			ssize_t n = write(to_subject, bytes.data() + sent, bytes.size() - sent);
+			if (n < 0 && (errno == EAGAIN || errno == EINTR)) continue;
+			if (n <= 0) fail(kind, "stopped reading requests");
+			sent += size_t(n);
+		}
+	};
+	send(message);
 
 	// The answer: header, then payload, read straight into place.
 	auto receive = [&](char* into, size_t size) {
@@ -239,19 +246,35 @@ std::string Subject::exchange(Kind kind, const std::string& payload) {
 			got += size_t(n);
 		}
 	};
-	char header[4 * 4 + 8];
-	receive(header, sizeof header);
-	uint32_t magic, answer_kind, answer_sequence, status;
+	uint32_t status;
 	uint64_t length;
-	std::memcpy(&magic, header, 4);
-	std::memcpy(&answer_kind, header + 4, 4);
-	std::memcpy(&answer_sequence, header + 8, 4);
-	std::memcpy(&status, header + 12, 4);
-	std::memcpy(&length, header + 16, 8);
-	if (magic != protocol::MAGIC || length > protocol::MAX_PAYLOAD || status > 1) {
-		fail(kind, "wrote something that is not an answer to its answer channel");
+	for (;;) {
+		char header[4 * 4 + 8];
+		receive(header, sizeof header);
+		uint32_t magic, answer_kind, answer_sequence;
+		std::memcpy(&magic, header, 4);
+		std::memcpy(&answer_kind, header + 4, 4);
+		std::memcpy(&answer_sequence, header + 8, 4);
+		std::memcpy(&status, header + 12, 4);
+		std::memcpy(&length, header + 16, 8);
+		if (magic != protocol::MAGIC || length > protocol::MAX_PAYLOAD || status > uint32_t(protocol::Status::QUESTION)) {
+			fail(kind, "wrote something that is not an answer to its answer channel");
+		}
+		if (answer_kind != uint32_t(kind) || answer_sequence != number) fail(kind, "answered out of turn");
+		if (protocol::Status(status) != protocol::Status::QUESTION) break;
+		// A question (protocol.h): answered before the subject goes on.
+		if (!questions) fail(kind, "asked the judge a question, which this request does not allow");
+		if (length > protocol::MAX_QUESTION) fail(kind, "asked the judge a question longer than any question");
+		std::string question(length, '\0');
+		receive(question.data(), question.size());
+		std::string reply;
+		try {
+			reply = questions(question);
+		} catch (const wire::Malformed& problem) {
+			fail(kind, std::string("asked the judge something that is not a question (") + problem.what() + ")");
+		}
+		send(message_of(reply));
 	}
-	if (answer_kind != uint32_t(kind) || answer_sequence != number) fail(kind, "answered out of turn");
 	// Read in pieces, never allocating more than has arrived: a declared length costs nothing.
 	std::string answer;
 	const size_t PIECE = size_t(1) << 20;

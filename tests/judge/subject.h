@@ -11,6 +11,7 @@
 #include "wire.h"
 
 #include <chrono>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -45,8 +46,13 @@ public:
 	Subject(const Subject&) = delete;
 	Subject& operator=(const Subject&) = delete;
 
-	template<class Request> typename Request::Answer ask(const Request& request) {
-		std::string answer = exchange(Request::KIND, wire::encode(request));
+	// Replies to a subject's question during a request (protocol.h: Object_Question): the encoded
+	// reply, or wire::Malformed for a question that is not one.
+	using Questions = std::function<std::string(const std::string& question)>;
+
+	// `questions`: for a request that asks back (BVH_Instances); empty: a question is malformed.
+	template<class Request> typename Request::Answer ask(const Request& request, const Questions& questions = {}) {
+		std::string answer = exchange(Request::KIND, wire::encode(request), questions);
 		auto decoded = [&] {
 			try {
 				return wire::decode<typename Request::Answer>(answer);
@@ -62,7 +68,7 @@ public:
 	std::string printed(size_t lines = 15) const;
 
 private:
-	std::string exchange(protocol::Kind kind, const std::string& payload);
+	std::string exchange(protocol::Kind kind, const std::string& payload, const Questions& questions);
 	[[noreturn]] void fail(protocol::Kind kind, const std::string& what);
 	// Why the process ended (waits for it, killing it if it is still running).
 	std::string end_reason();

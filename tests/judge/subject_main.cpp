@@ -8,6 +8,7 @@
 #include "protocol.h"
 #include "wire.h"
 
+#include "object_answers.h"
 #include "render.h"
 #include "render_observer.h"
 
@@ -116,23 +117,26 @@ BVH_Triangles::Answer answer(const BVH_Triangles& request) {
 	return result;
 }
 
-// Counts the Instance::hit calls the framework reports while it is alive (render_observer.h).
-struct Instance_Test_Counter : Render_Observer {
-	uint64_t tests = 0;
-	void end(const Instance_Tested&, const Trace&) override {
-		tests++;
-	}
+// Asks the judge about each object Instance::hit tests (protocol.h: Object_Question; defined with
+// the transport below).
+struct Judge_Answers : Object_Answers {
+	Trace hit(uint32_t object, const Ray& ray) const override;
 };
 
 BVH_Instances::Answer answer(const BVH_Instances& request) {
-	// The decoded scene was committed, which moved its objects into scene.bvh.
-	BVH<Instance> bvh(std::vector<Instance>(request.scene.bvh.primitives), request.max_leaf_size);
+	// Objects that are boxes alone: their shapes stay with the judge, who answers Instance::hit.
+	std::vector<Instance> objects;
+	for (uint32_t index = 0; index < request.boxes.size(); index++) {
+		objects.emplace_back(Sphere{}, Mat4{1.0f}, 0u, index);
+		objects.back().world_bbox = request.boxes[index];
+	}
+	BVH<Instance> bvh(std::move(objects), request.max_leaf_size);
 	BVH_Instances::Answer result;
 	result.tree = tree_of(bvh);
 	for (const Instance& object : bvh.primitives) result.order.push_back(object.index);
-	Instance_Test_Counter counter;
+	Judge_Answers judge;
+	Object_Answers::Scope asking(judge);
 	for (const Ray& ray : request.rays) result.hits.push_back(bvh.hit(ray));
-	result.instance_tests = counter.tests;
 	return result;
 }
 
@@ -329,6 +333,10 @@ bool read_request(int fd, Request_Header& header, std::string& payload) {
 	return read_all(fd, payload.data(), payload.size());
 }
 
+// The request being answered (its questions repeat its header), and whether it is replayed.
+Request_Header current_request;
+bool replaying = false;
+
 void write_answer(const Request_Header& request, Status status, const std::string& payload) {
 	std::string message;
 	auto append = [&](const auto& value) { message.append(reinterpret_cast<const char*>(&value), sizeof value); };
@@ -341,8 +349,20 @@ void write_answer(const Request_Header& request, Status status, const std::strin
 	write_all(ANSWER_FD, message.data(), message.size());
 }
 
+Trace Judge_Answers::hit(uint32_t object, const Ray& ray) const {
+	if (replaying) return Trace{}; // the judge's replies are not saved: every object is missed
+	write_answer(current_request, Status::QUESTION, wire::encode(Object_Question{object, ray}));
+	Request_Header reply;
+	std::string payload;
+	if (!read_request(REQUEST_FD, reply, payload) || reply.kind != current_request.kind ||
+	    reply.sequence != current_request.sequence) {
+		_exit(3); // the judge is gone, or not a judge
+	}
+	return wire::decode<Trace>(payload);
+}
+
 int serve_judge() {
-	Request_Header header;
+	Request_Header& header = current_request;
 	std::string payload;
 	while (read_request(REQUEST_FD, header, payload)) {
 		std::string answer;
@@ -365,11 +385,16 @@ int replay(const char* file) {
 		std::fprintf(stderr, "subject: cannot open %s: %s\n", file, std::strerror(errno));
 		return 2;
 	}
+	replaying = true;
 	Request_Header header;
 	std::string payload;
 	while (read_request(fd, header, payload)) {
 		std::fprintf(stderr, "subject: request %u, %s (%s)\n", header.sequence, kind_name(Kind(header.kind)),
 		             kind_functions(Kind(header.kind)));
+		if (Kind(header.kind) == Kind::bvh_instances) {
+			std::fprintf(stderr, "subject: (the judge answered for its objects, which a replay cannot: every "
+			                     "Instance::hit misses)\n");
+		}
 		serve(Kind(header.kind), payload);
 	}
 	std::fprintf(stderr, "subject: every request answered\n");

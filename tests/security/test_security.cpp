@@ -28,6 +28,7 @@
 #include <map>
 #include <regex>
 #include <sstream>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -59,6 +60,7 @@ std::string kit_value(const std::string& name) {
 struct Grade {
 	bool built = false;           // the file compiled and linked
 	size_t test_cases = 0, passed = 0;
+	std::vector<std::string> failed; // the names of the test cases that failed
 	std::string messages;         // every failure message the judge recorded, or the build log
 	std::string report;           // the HTML page
 	long largest_process_kib = 0; // the largest resident set of any process of the grading
@@ -136,6 +138,7 @@ std::map<int, Grade> grade_files(const Temp_Dir& dir, const std::map<int, std::s
 		for (const auto& test_case : record.at("test_cases")) {
 			grade.test_cases++;
 			grade.passed += test_case.at("passed").get<bool>();
+			if (!test_case.at("passed").get<bool>()) grade.failed.push_back(test_case.at("name").get<std::string>());
 			for (const auto& failure : test_case.at("failures")) {
 				grade.messages += failure.value("expansion", "") + "\n";
 				for (const auto& message : failure.at("messages")) grade.messages += message.get<std::string>() + "\n";
@@ -207,6 +210,21 @@ TEST_CASE("leaving the reference to the linker earns nothing", "[security]") {
 	Grade linked = grade("task3_link_reference.cpp", 3);
 	CHECK_FALSE(linked.built);
 	require_nothing_earned(linked, "undefined"); // "undefined symbol" (lld) or "undefined reference" (ld.bfd)
+}
+
+TEST_CASE("a traversal that tests objects where the count cannot see earns nothing for its traversal", "[security]") {
+	// The judge counts the objects BVH::hit tests by answering each itself (tests/judge/protocol.h,
+	// BVH_Instances): the subject holds their boxes alone. The hostile file is the reference but for
+	// its BVH<Instance>::hit, whose objects are correct where they are real (the graded image).
+	std::string reference = read_file("reference/task3_bvh.cpp");
+	size_t instantiations = reference.find("template class BVH<Triangle>;");
+	REQUIRE(instantiations != std::string::npos);
+	Grade uncounted = grade("task3_uncounted_traversal.cpp", 3, {{"@REFERENCE_BVH@", reference.substr(0, instantiations)}});
+	INFO("the judge's messages:\n" << uncounted.messages.substr(0, 3000));
+	CHECK(uncounted.built);
+	CHECK(uncounted.failed ==
+	      std::vector<std::string>{"BVH::hit: objects tested per ray within 1.5x of an ideal front-to-back traversal"});
+	CHECK_THAT(uncounted.messages, Catch::Contains("missed the closest hit"));
 }
 
 TEST_CASE("rewriting the reference images or test data earns nothing and changes nothing", "[security]") {
