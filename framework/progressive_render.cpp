@@ -81,6 +81,10 @@ public:
 		std::lock_guard<std::mutex> lock(mutex);
 		return stopped;
 	}
+	void stop() {
+		std::lock_guard<std::mutex> lock(mutex);
+		stopped = true;
+	}
 
 private:
 	// Samples per pixel for the next batch: 1 until a frame has told the speed, then what
@@ -129,15 +133,15 @@ void render_progressively(const Pathtracer& pathtracer, const Progressive_Option
 			size_t b = item / tiles.size(), t = item % tiles.size();
 			uint32_t end = batches.end_of(b);
 			if (end == 0 || batches.stop_requested()) return;
-			while (finished[t].load(std::memory_order_acquire) < b) std::this_thread::yield();
+			while (finished[t].load(std::memory_order_acquire) < b) {
+				if (batches.stop_requested()) return; // (the thread that had it threw)
+				std::this_thread::yield();
+			}
 			render_tile(pathtracer, settings, options.render, tiles[t], batches.first_of(b), end, film);
 			batches.copy_tile(b, tiles[t], film);
 			finished[t].store(b + 1, std::memory_order_release);
 			if (!batches.tile_in(b)) return;
 		}
 	};
-	std::vector<std::thread> pool;
-	for (uint32_t t = 1; t < threads; t++) pool.emplace_back(worker);
-	worker();
-	for (auto& thread : pool) thread.join();
+	run_on_threads(threads, worker, [&] { batches.stop(); });
 }

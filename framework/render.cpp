@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <exception>
+#include <mutex>
 #include <numeric>
 #include <random>
 #include <stdexcept>
@@ -81,8 +83,23 @@ void render_samples(const Pathtracer& pathtracer, Film& film, uint32_t first, ui
 			if (options.progress) options.progress(finished, tiles.size());
 		}
 	};
+	run_on_threads(threads, worker, [&] { next = tiles.size(); });
+}
+
+void run_on_threads(uint32_t threads, const std::function<void()>& work, const std::function<void()>& stop) {
+	std::exception_ptr thrown;
+	std::mutex mutex;
+	auto guarded = [&] {
+		try {
+			work();
+		} catch (...) {
+			std::lock_guard<std::mutex> lock(mutex);
+			if (!thrown) thrown = std::current_exception(), stop();
+		}
+	};
 	std::vector<std::thread> pool;
-	for (uint32_t t = 1; t < threads; t++) pool.emplace_back(worker);
-	worker();
+	for (uint32_t t = 1; t < threads; t++) pool.emplace_back(guarded);
+	guarded();
 	for (auto& thread : pool) thread.join();
+	if (thrown) std::rethrow_exception(thrown);
 }

@@ -4,6 +4,7 @@
 #include "film.h"
 #include "render.h"
 
+#include <functional>
 #include <vector>
 
 struct Tile {
@@ -18,6 +19,11 @@ std::vector<Tile> make_tiles(uint32_t w, uint32_t h, uint32_t size);
 // so that the threads finish within a small tile of each other, and none is left working alone
 // at the end. The image does not depend on it.
 uint32_t tile_size(const Render_Settings& settings, const Render_Options& options, uint32_t threads);
+
+// Runs `work` on `threads` threads, this one among them, and returns when all have ended. The first
+// exception a thread throws (task code may throw: an Input_Error, a bad_alloc) is thrown on here
+// once they have; `stop` is called when it is thrown, so that the others end soon.
+void run_on_threads(uint32_t threads, const std::function<void()>& work, const std::function<void()>& stop);
 
 // Adds samples [first, end) (of them, options' pass's share) of every pixel of the tile to the
 // film, each pixel's in index order with the generators render() gives them.

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <limits>
 #include <mutex>
+#include <stdexcept>
 #include <vector>
 
 namespace {
@@ -335,4 +336,29 @@ TEST_CASE("A progressive render stops when its frame handler says so", "[render]
 	};
 	render_progressively(pathtracer, options);
 	CHECK(counts == std::vector<uint32_t>{1, 2, 3});
+}
+
+TEST_CASE("An exception thrown on any of a render's threads reaches its caller, after every thread ended", "[render]") {
+	// Task code may throw (the subject reports the exception to the judge): a thread that ends by an
+	// exception must not end the program. Here the work of a thread throws after a few tiles.
+	Scene scene = sphere_scene();
+	Pathtracer pathtracer(scene, scene.settings, View::path);
+	for (uint32_t threads : {1u, 3u}) {
+		INFO(threads << " threads");
+		Render_Options options = threads_and_tiles(threads, 4);
+		options.progress = [](size_t done, size_t) {
+			if (done == 3) throw std::runtime_error("thrown while rendering");
+		};
+		CHECK_THROWS_WITH(render(pathtracer, options), "thrown while rendering");
+
+		Progressive_Options progressive;
+		progressive.render = threads_and_tiles(threads, 4);
+		progressive.samples = 20;
+		progressive.batch_seconds = 1e-9;
+		progressive.frame = [](const Film&, uint32_t samples, double) {
+			if (samples == 2) throw std::runtime_error("thrown with a frame");
+			return true;
+		};
+		CHECK_THROWS_WITH(render_progressively(pathtracer, progressive), "thrown with a frame");
+	}
 }
