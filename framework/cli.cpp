@@ -2,9 +2,11 @@
 #include "cli_options.h"
 #include "error.h"
 #include "film_file.h"
+#include "film_stream.h"
 #include "follow_pixel.h"
 #include "image_io.h"
 #include "output_file.h"
+#include "progressive_render.h"
 #include "render.h"
 #include "scene_loader.h"
 #include "terminal.h"
@@ -126,6 +128,24 @@ void render_and_write(const Scene& scene, const Cli_Options& options, Run_Times 
 	if (film.non_finite() > 0) warn_non_finite(film, options, err);
 }
 
+// --stream (./lab view): the render in batches of samples, the film written after each batch
+// (film_stream.h) by render_progressively, which keeps every thread rendering in between; batches
+// of about STREAM_BATCH_SECONDS, so that the page updates several times a second. The film after N
+// samples is render()'s with N, bit for bit.
+void stream(const Scene& scene, const Cli_Options& options, std::ostream& out) {
+	constexpr double STREAM_BATCH_SECONDS = 0.25;
+	Pathtracer pathtracer(scene, scene.settings, options.view);
+	Progressive_Options progressive;
+	progressive.render.threads = options.threads;
+	progressive.samples = pathtracer.settings.samples;
+	progressive.batch_seconds = STREAM_BATCH_SECONDS;
+	progressive.frame = [&](const Film& film, uint32_t samples, double seconds) {
+		write_frame(out, film, samples, seconds);
+		return bool(out); // false: the viewer went away
+	};
+	render_progressively(pathtracer, progressive);
+}
+
 // --follow-pixel: the same paths the renderer takes for that pixel, printed ray by ray.
 void follow(const Scene& scene, const Cli_Options& options, std::ostream& out) {
 	Pathtracer pathtracer(scene, scene.settings, options.view);
@@ -135,7 +155,12 @@ void follow(const Scene& scene, const Cli_Options& options, std::ostream& out) {
 		                  ") is outside the " + std::to_string(pathtracer.settings.width) + " x " +
 		                  std::to_string(pathtracer.settings.height) + " image");
 	}
-	follow_pixel(pathtracer, x, y, std::min(options.follow_samples, pathtracer.settings.samples), out);
+	uint32_t samples = std::min(options.follow_samples, pathtracer.settings.samples);
+	if (options.follow_json) {
+		follow_pixel_json(pathtracer, x, y, samples, out, options.follow_brightest);
+	} else {
+		follow_pixel(pathtracer, x, y, samples, out);
+	}
 }
 
 } // namespace
@@ -161,7 +186,7 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
 		}
 		if (!options.integrator) options.integrator = integrator;
 		// Loading is shown as it happens (a large mesh and its BVH take seconds) and then reported.
-		bool show_loading = !options.quiet && !options.follow_pixel;
+		bool show_loading = !options.quiet && !options.follow_pixel && !options.stream;
 		std::string loading = "loading " + options.scene + " ...";
 		if (show_loading && err_is_terminal) {
 			err << loading << std::flush;
@@ -176,6 +201,8 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
 		loading_line = false;
 		if (options.follow_pixel) {
 			follow(scene, options, out);
+		} else if (options.stream) {
+			stream(scene, options, out);
 		} else {
 			render_and_write(scene, options, times, out, err, err_is_terminal);
 		}

@@ -96,10 +96,15 @@ Light_Choice light_choice_named(const std::string& option, const std::string& na
 	return name == "power" ? Light_Choice::power : Light_Choice::uniform;
 }
 
+bool follow_format_json(const std::string& option, const std::string& name) {
+	if (name != "text" && name != "json") throw Input_Error(option + ": expected text or json, got '" + name + "'");
+	return name == "json";
+}
+
 View view_named(const std::string& option, const std::string& name) {
 	View view;
 	if (!parse_view(name, view)) {
-		throw Input_Error(option + ": unknown view '" + name + "' (expected path, eye, normals, bvh or direction)");
+		throw Input_Error(option + ": unknown view '" + name + "' (expected path, eye, normals, albedo, bvh or direction)");
 	}
 	return view;
 }
@@ -154,8 +159,19 @@ const std::vector<Option>& option_table() {
 		 "instead of an image, print the life of every ray of pixel (X, Y)'s samples: what each ray hit, the "
 		 "BSDF and light samples, the weights and the radiance (pixel (0, 0) is the top-left)",
 		 [](auto& o, auto& name, auto& v) { o.follow_pixel = pixel(name, v); }},
-		{"--follow-samples", "N", "how many of that pixel's samples --follow-pixel prints, 1 to 1000 (default 1)",
-		 [](auto& o, auto& name, auto& v) { o.follow_samples = whole_number<uint32_t>(name, v, 1, 1000); }},
+		{"--follow-samples", "N",
+		 "how many of that pixel's samples --follow-pixel follows, 1 to 1000000 (default 1)",
+		 [](auto& o, auto& name, auto& v) { o.follow_samples = whole_number<uint32_t>(name, v, 1, 1000000); }},
+		{"--follow-format", "FORMAT", "text (default) or json: how --follow-pixel prints (json: for ./lab view)",
+		 [](auto& o, auto& name, auto& v) { o.follow_json = follow_format_json(name, v); }},
+		{"--follow-brightest", "K",
+		 "with --follow-format json: of the --follow-samples samples, only the K brightest, 1 to 1000 (where "
+		 "a firefly comes from)",
+		 [](auto& o, auto& name, auto& v) { o.follow_brightest = whole_number<uint32_t>(name, v, 1, 1000); }},
+		{"--stream", nullptr,
+		 "for ./lab view: render progressively up to --spp samples, writing the film to standard output "
+		 "after each batch of samples (binary: framework/film_stream.h); writes no image",
+		 [](auto& o, auto&, auto&) { o.stream = true; }},
 		{"--no-light-sampling", nullptr,
 		 "sample the BSDF only: task 6 sees no lights (has_lights() is false); same image, other noise",
 		 [](auto& o, auto&, auto&) { o.light_sampling = false; }},
@@ -256,6 +272,7 @@ std::string usage(const std::string& program) {
 	        "  path       the Monte Carlo path tracer (tasks 4 to 7)\n"
 	        "  eye        light from the eye: albedo * |cos| at the first hit, plus emission\n"
 	        "  normals    the first hit's normal n as colour (n + 1) / 2\n"
+	        "  albedo     the first hit's albedo (the BSDF's reflectance)\n"
 	        "  bvh        BVH nodes whose boxes the camera ray overlaps before its hit\n"
 	        "             (what a front-to-back traversal visits), as a heat map: black 0,\n"
 	        "             blue, purple, orange, yellow, white 64 or more\n"
@@ -318,6 +335,9 @@ Cli_Options parse_cli_options(const std::vector<std::string>& args) {
 		throw Input_Error("no scene file given (usage: " + program_name(args) + " SCENE.json [options])");
 	}
 	if (options.png.empty()) options.png = default_png(program_name(args), options.scene);
+	if (options.stream && (options.passes > 1 || options.follow_pixel)) {
+		throw Input_Error("--stream renders the whole film progressively: it goes with neither --pass nor --follow-pixel");
+	}
 	if (options.passes > 1 && options.film.empty()) {
 		throw Input_Error("--pass " + std::to_string(options.pass) + "/" + std::to_string(options.passes) +
 		                  ": a pass is one share of a render: write its film with --film FILE.exr, to merge");

@@ -31,6 +31,11 @@ struct Cli_Options {
 	// --follow-pixel X,Y: print the life of that pixel's rays instead of rendering an image.
 	std::optional<std::pair<uint32_t, uint32_t>> follow_pixel;
 	uint32_t follow_samples = 1;
+	bool follow_json = false;     // --follow-format json
+	uint32_t follow_brightest = 0; // --follow-brightest K (json only): the K brightest samples
+	// --stream (./lab view): render progressively, writing the film to standard output after each
+	// batch of samples (film_stream.h), instead of writing images.
+	bool stream = false;
 };
 
 // args as in argv (args[0] is the program name). Throws Input_Error naming the bad option/value.

@@ -34,16 +34,13 @@ void Pixel_Stats::merge(const Pixel_Stats& other) {
 
 HDR_Image Film::mean() const {
 	HDR_Image image(w, h);
-	for (size_t i = 0; i < pixels.size(); i++) image.pixels[i] = Spectrum(pixels[i].mean);
+	for (size_t i = 0; i < pixels.size(); i++) image.pixels[i] = pixels[i].mean_value();
 	return image;
 }
 
 HDR_Image Film::variance() const {
 	HDR_Image image(w, h);
-	for (size_t i = 0; i < pixels.size(); i++) {
-		const Pixel_Stats& p = pixels[i];
-		image.pixels[i] = p.count > 1 ? Spectrum(p.m2 / double(p.count - 1)) : Spectrum{0.0f};
-	}
+	for (size_t i = 0; i < pixels.size(); i++) image.pixels[i] = pixels[i].variance_value();
 	return image;
 }
 

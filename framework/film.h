@@ -16,6 +16,15 @@ struct Pixel_Stats {
 	// Golub and LeVeque 1979; Pébay 2008, eq. 3.1 for m3 and m4): the same sums in another order.
 	void merge(const Pixel_Stats& other);
 
+	// The pixel's value (the mean) and per-sample variance s^2 (0 below two samples), as the
+	// film's images hold them.
+	Spectrum mean_value() const {
+		return Spectrum(mean);
+	}
+	Spectrum variance_value() const {
+		return count > 1 ? Spectrum(m2 / double(count - 1)) : Spectrum{0.0f};
+	}
+
 	uint32_t count = 0;     // finite samples added
 	uint32_t non_finite = 0;
 	glm::dvec3 mean{0.0};

@@ -22,26 +22,12 @@ std::string format_known(Vec3 v) {
 	return text;
 }
 
-// The weight w the estimator applied to the light returned by `child`, per channel, from
-// L_parent = L_emitted + w * L_child (a one-sample estimator). Channels where no light came back
-// give no information and are shown as '?'.
+// The weight applied_weight recovers, with '?' where it is unknown; multiplies it into throughput
+// (which stays unknown on a channel from there on).
 std::string format_weight(const Lifecycle_Ray& parent, const Lifecycle_Ray& child, Spectrum& throughput) {
-	std::string text = "(";
-	for (int c = 0; c < 3; c++) {
-		char buffer[32];
-		float reflected = parent.radiance[c] - parent.emitted[c];
-		if (child.radiance[c] != 0.0f) {
-			float w = reflected / child.radiance[c];
-			throughput[c] *= w;
-			std::snprintf(buffer, sizeof buffer, "%.6g", w);
-		} else {
-			throughput[c] = NAN; // unknown from here on
-			std::snprintf(buffer, sizeof buffer, "?");
-		}
-		text += buffer;
-		text += c < 2 ? ", " : ")";
-	}
-	return text;
+	Spectrum w = applied_weight(parent, child);
+	throughput *= w;
+	return format_known(w);
 }
 
 const char* bsdf_name(const BSDF& bsdf) {
@@ -62,7 +48,7 @@ void print_ray(std::ostream& out, const Lifecycle_Ray& node, const std::vector<s
 	} else {
 		out << indent << "  missed the scene (environment)\n";
 	}
-	for (const std::string& e : node.events) out << indent << "  " << e << "\n";
+	for (const Lifecycle_Event& e : node.events) out << indent << "  " << e.text << "\n";
 	for (const auto& child : node.children) {
 		Spectrum child_throughput = throughput;
 		out << indent << "  weight applied to the next ray's light: "
@@ -73,6 +59,20 @@ void print_ray(std::ostream& out, const Lifecycle_Ray& node, const std::vector<s
 	    << format_vec(node.emitted) << ", added to the pixel " << format_known(throughput * node.emitted) << ")\n";
 }
 } // namespace
+
+const char* event_kind_name(Lifecycle_Event::Kind kind) {
+	constexpr const char* names[] = {"bsdf_sample", "bsdf_evaluate", "bsdf_pdf", "light_sample", "light_pdf", "shadow_ray"};
+	return names[size_t(kind)];
+}
+
+Spectrum applied_weight(const Lifecycle_Ray& parent, const Lifecycle_Ray& child) {
+	Spectrum w;
+	for (int c = 0; c < 3; c++) {
+		float reflected = parent.radiance[c] - parent.emitted[c];
+		w[c] = child.radiance[c] != 0.0f ? reflected / child.radiance[c] : NAN;
+	}
+	return w;
+}
 
 std::string format_vec(Vec3 v) {
 	char buffer[96];
@@ -100,35 +100,42 @@ void Lifecycle_Recorder::end(const Closest_Hit&, const Trace& hit) {
 }
 
 void Lifecycle_Recorder::end(const Light_Sampled&, const Chosen_Light& sample) {
-	event("light sample (" +
+	event(Lifecycle_Event::Kind::light_sample, "light sample (" +
 	      (sample.environment ? std::string("environment") : "area light " + std::to_string(sample.light)) +
 	      "): direction " + format_vec(sample.direction));
 }
 
 void Lifecycle_Recorder::end(const Light_Pdf& query, float pdf) {
-	event("area_lights_pdf of direction " + format_vec(query.dir) + " = " + std::to_string(pdf));
+	event(Lifecycle_Event::Kind::light_pdf, "area_lights_pdf of direction " + format_vec(query.dir) + " = " + std::to_string(pdf));
 }
 
 void Lifecycle_Recorder::end(const BSDF_Sampled& query, const Scatter& s) {
-	event(std::string("BSDF sample (") + bsdf_name(query.bsdf) + ", " +
+	event(Lifecycle_Event::Kind::bsdf_sample, std::string("BSDF sample (") + bsdf_name(query.bsdf) + ", " +
 	      (query.bsdf.is_discrete() ? "discrete" : "continuous") + "): out_dir (local) " + format_vec(query.out_dir) +
 	      " -> in_dir (local) " + format_vec(s.direction) + ", attenuation " + format_vec(s.attenuation));
 }
 
 void Lifecycle_Recorder::end(const BSDF_Evaluated& query, Spectrum f) {
-	event("BSDF evaluate(out, in " + format_vec(query.in_dir) + ") = " + format_vec(f));
+	event(Lifecycle_Event::Kind::bsdf_evaluate, "BSDF evaluate(out, in " + format_vec(query.in_dir) + ") = " + format_vec(f));
 }
 
 void Lifecycle_Recorder::end(const BSDF_Pdf& query, float pdf) {
-	event("BSDF pdf(out, in " + format_vec(query.in_dir) + ") = " + std::to_string(pdf));
+	event(Lifecycle_Event::Kind::bsdf_pdf, "BSDF pdf(out, in " + format_vec(query.in_dir) + ") = " + std::to_string(pdf));
 }
 
 void Lifecycle_Recorder::end(const Emitted&, Spectrum radiance) {
 	if (current) current->emitted += radiance;
 }
 
-void Lifecycle_Recorder::event(std::string text) {
-	if (current) current->events.push_back(std::move(text));
+void Lifecycle_Recorder::end(const Shadow_Ray_Tested& query, bool blocked) {
+	event(Lifecycle_Event::Kind::shadow_ray, "shadow ray from " + format_vec(query.ray.point) + " dir " +
+	                                             format_vec(query.ray.dir) + " to distance " +
+	                                             std::to_string(query.ray.dist_bounds.y) +
+	                                             (blocked ? ": blocked" : ": unblocked, the light is seen"));
+}
+
+void Lifecycle_Recorder::event(Lifecycle_Event::Kind kind, std::string text) {
+	if (current) current->events.push_back(Lifecycle_Event{kind, std::move(text)});
 }
 
 void Lifecycle_Recorder::print(std::ostream& out, const std::vector<std::string>& material_names) {

@@ -12,10 +12,19 @@
 #include <string>
 #include <vector>
 
+// What happened at a ray's hit besides the hit itself, in words, and of which kind (the viewer's
+// path table has a column per kind).
+struct Lifecycle_Event {
+	enum class Kind { bsdf_sample, bsdf_evaluate, bsdf_pdf, light_sample, light_pdf, shadow_ray };
+	Kind kind;
+	std::string text;
+};
+const char* event_kind_name(Lifecycle_Event::Kind kind); // "bsdf_sample", ...
+
 struct Lifecycle_Ray {
 	Ray ray;
 	Trace hit;
-	std::vector<std::string> events; // BSDF samples, pdfs, light samples, emission, in order
+	std::vector<Lifecycle_Event> events; // BSDF samples, pdfs, light samples, shadow rays, in order
 	Spectrum emitted{0.0f};          // emission added at this ray's hit
 	Spectrum radiance{0.0f};         // what trace() returned for this ray
 	std::vector<std::unique_ptr<Lifecycle_Ray>> children;
@@ -27,6 +36,12 @@ public:
 	// Prints every recorded camera ray as a tree, with the weight each bounce applied and the
 	// running throughput, then forgets them.
 	void print(std::ostream& out, const std::vector<std::string>& material_names);
+
+	// Forgets the rays recorded so far.
+	void forget() {
+		roots.clear();
+		current = nullptr;
+	}
 
 	// The camera rays recorded so far, each with the rays spawned from it (tests inspect them).
 	const std::vector<std::unique_ptr<Lifecycle_Ray>>& rays() const {
@@ -43,7 +58,8 @@ private:
 	void end(const BSDF_Evaluated& query, Spectrum f) override;
 	void end(const BSDF_Pdf& query, float pdf) override;
 	void end(const Emitted&, Spectrum radiance) override;
-	void event(std::string text); // at the current ray
+	void end(const Shadow_Ray_Tested& query, bool blocked) override;
+	void event(Lifecycle_Event::Kind kind, std::string text); // at the current ray
 
 	std::vector<std::unique_ptr<Lifecycle_Ray>> roots;
 	Lifecycle_Ray* current = nullptr;
@@ -51,3 +67,8 @@ private:
 
 // "(x, y, z)", as the printed lifecycle shows vectors.
 std::string format_vec(Vec3 v);
+
+// The weight the estimator applied to the light `child` brought back to `parent`, per channel, from
+// L_parent = L_emitted + w * L_child (a one-sample estimator); NaN in a channel where no light came
+// back, since nothing tells the weight there.
+Spectrum applied_weight(const Lifecycle_Ray& parent, const Lifecycle_Ray& child);

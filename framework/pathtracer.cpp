@@ -8,10 +8,11 @@
 #include <stdexcept>
 
 namespace {
-constexpr std::array<std::pair<View, const char*>, 5> VIEW_NAMES{{
+constexpr std::array<std::pair<View, const char*>, 6> VIEW_NAMES{{
 	{View::path, "path"},
 	{View::eye_light, "eye"},
 	{View::normals, "normals"},
+	{View::albedo, "albedo"},
 	{View::bvh, "bvh"},
 	{View::direction, "direction"},
 }};
@@ -73,6 +74,7 @@ Spectrum Pathtracer::debug_view(const Ray& ray) const {
 	switch (view) {
 	case View::eye_light: return hit.hit ? eye_light(ray, hit) : scene.environment_radiance(ray.dir);
 	case View::normals: return hit.hit ? 0.5f * (hit.normal + 1.0f) : Spectrum{0.0f};
+	case View::albedo: return hit.hit ? scene.materials[hit.material].bsdf.albedo() : Spectrum{0.0f};
 	case View::bvh: {
 		// 64 or more overlapped nodes saturate the ramp.
 		float nodes = float(count_overlapped_nodes(scene.bvh, ray, hit.hit ? hit.distance : INF_F));

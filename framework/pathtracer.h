@@ -16,6 +16,7 @@ enum class View {
 	path,      // Monte Carlo path tracing (task 4 onwards)
 	eye_light, // albedo * |cos| of the first hit, lit from the eye, plus emission: Part I pictures
 	normals,   // first-hit normal mapped to colour (n + 1) / 2
+	albedo,    // first-hit albedo (BSDF::albedo)
 	bvh,       // BVH node visits per ray, as a heat map
 	direction, // camera-ray direction mapped to colour (d + 1) / 2
 };

@@ -1,18 +1,16 @@
 #include "render.h"
+#include "render_tiles.h"
 
 #include <algorithm>
 #include <atomic>
+#include <exception>
+#include <mutex>
 #include <numeric>
 #include <random>
 #include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
-
-namespace {
-struct Tile {
-	uint32_t x0, y0, x1, y1;
-};
 
 std::vector<Tile> make_tiles(uint32_t w, uint32_t h, uint32_t size) {
 	std::vector<Tile> tiles;
@@ -22,13 +20,22 @@ std::vector<Tile> make_tiles(uint32_t w, uint32_t h, uint32_t size) {
 	return tiles;
 }
 
+namespace {
+// The first sample index at or after `first` in the pass's share (s % passes == pass - 1).
+uint32_t first_of_pass(uint32_t first, const Render_Options& options) {
+	uint32_t offset = options.pass - 1;
+	if (first <= offset) return offset;
+	return first + (options.passes - (first - offset) % options.passes) % options.passes;
+}
+} // namespace
+
 void render_tile(const Pathtracer& pt, const Render_Settings& settings, const Render_Options& options, const Tile& tile,
-                 Film& film) {
+                 uint32_t first, uint32_t end, Film& film) {
 	for (uint32_t y = tile.y0; y < tile.y1; y++) {
 		for (uint32_t x = tile.x0; x < tile.x1; x++) {
 			size_t index = size_t(y) * film.w + x;
 			Pixel_Stats& pixel = film.pixels[index];
-			for (uint32_t s = options.pass - 1; s < settings.samples; s += options.passes) {
+			for (uint32_t s = first_of_pass(first, options); s < end; s += options.passes) {
 				RNG rng = RNG::for_sample(settings.seed, index, s, settings.sampler);
 				pixel.add(pt.trace_pixel(x, y, rng));
 			}
@@ -36,9 +43,6 @@ void render_tile(const Pathtracer& pt, const Render_Settings& settings, const Re
 	}
 }
 
-// options.tile_size, or smaller for a small film: at least TILES_PER_THREAD tiles for each thread,
-// so that the threads finish within a small tile of each other, and none is left working alone
-// at the end. The image does not depend on it.
 uint32_t tile_size(const Render_Settings& settings, const Render_Options& options, uint32_t threads) {
 	constexpr uint64_t TILES_PER_THREAD = 16;
 	constexpr uint32_t SMALLEST = 4;
@@ -47,15 +51,25 @@ uint32_t tile_size(const Render_Settings& settings, const Render_Options& option
 	while (size / 2 >= SMALLEST && tiles(size) < TILES_PER_THREAD * threads) size /= 2;
 	return size;
 }
-} // namespace
 
 Film render(const Pathtracer& pathtracer, const Render_Options& options) {
+	Film film(pathtracer.settings.width, pathtracer.settings.height);
+	render_samples(pathtracer, film, 0, pathtracer.settings.samples, options);
+	return film;
+}
+
+void render_samples(const Pathtracer& pathtracer, Film& film, uint32_t first, uint32_t end,
+                    const Render_Options& options) {
 	if (options.passes == 0 || options.pass < 1 || options.pass > options.passes) {
 		throw std::invalid_argument("render: pass " + std::to_string(options.pass) + " of " +
 		                            std::to_string(options.passes) + " (expected 1 <= pass <= passes)");
 	}
 	const Render_Settings& settings = pathtracer.settings;
-	Film film(settings.width, settings.height);
+	if (film.w != settings.width || film.h != settings.height) {
+		throw std::invalid_argument("render_samples: the film is " + std::to_string(film.w) + " x " +
+		                            std::to_string(film.h) + ", the settings " + std::to_string(settings.width) +
+		                            " x " + std::to_string(settings.height));
+	}
 	uint32_t threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
 	std::vector<Tile> tiles = make_tiles(settings.width, settings.height, tile_size(settings, options, threads));
 	if (options.shuffle_tiles) std::shuffle(tiles.begin(), tiles.end(), std::mt19937(12345));
@@ -64,14 +78,28 @@ Film render(const Pathtracer& pathtracer, const Render_Options& options) {
 	if (options.progress) options.progress(0, tiles.size()); // the bar appears at once
 	auto worker = [&]() {
 		for (size_t i; (i = next.fetch_add(1)) < tiles.size();) {
-			render_tile(pathtracer, settings, options, tiles[i], film);
+			render_tile(pathtracer, settings, options, tiles[i], first, end, film);
 			size_t finished = done.fetch_add(1) + 1;
 			if (options.progress) options.progress(finished, tiles.size());
 		}
 	};
+	run_on_threads(threads, worker, [&] { next = tiles.size(); });
+}
+
+void run_on_threads(uint32_t threads, const std::function<void()>& work, const std::function<void()>& stop) {
+	std::exception_ptr thrown;
+	std::mutex mutex;
+	auto guarded = [&] {
+		try {
+			work();
+		} catch (...) {
+			std::lock_guard<std::mutex> lock(mutex);
+			if (!thrown) thrown = std::current_exception(), stop();
+		}
+	};
 	std::vector<std::thread> pool;
-	for (uint32_t t = 1; t < threads; t++) pool.emplace_back(worker);
-	worker();
+	for (uint32_t t = 1; t < threads; t++) pool.emplace_back(guarded);
+	guarded();
 	for (auto& thread : pool) thread.join();
-	return film;
+	if (thrown) std::rethrow_exception(thrown);
 }

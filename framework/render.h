@@ -22,3 +22,11 @@ struct Render_Options {
 
 // Renders pathtracer.settings.samples samples of every pixel (of them, options' pass's share).
 Film render(const Pathtracer& pathtracer, const Render_Options& options = {});
+
+// Progressive rendering (./lab view): adds the samples with index in [first, end) of every pixel
+// (of them, options' pass's share) to `film`, a film of the settings' size that holds samples
+// [0, first). Each pixel's samples are added in index order with the generators render() gives
+// them, so a film grown by any sequence of ranges that covers [0, N) equals render() with N
+// samples, bit for bit.
+void render_samples(const Pathtracer& pathtracer, Film& film, uint32_t first, uint32_t end,
+                    const Render_Options& options = {});

@@ -50,6 +50,9 @@ struct Instance_Tested { // Instance::hit (report): the Trace
 	const Instance& instance;
 	const Ray& ray;
 };
+struct Shadow_Ray_Tested { // Scene::occluded (report): whether it is blocked (bool)
+	const Ray& ray;
+};
 
 class Render_Observer {
 public:
@@ -83,6 +86,7 @@ public:
 	virtual void end(const BSDF_Pdf&, float) {}
 	virtual void end(const Emitted&, Spectrum) {}
 	virtual void end(const Instance_Tested&, const Trace&) {}
+	virtual void end(const Shadow_Ray_Tested&, bool) {}
 
 	const bool reports;
 

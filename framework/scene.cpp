@@ -1,4 +1,5 @@
 #include "scene.h"
+#include "render_observer.h"
 
 void Scene::commit() {
 	area_lights.build(objects, materials);
@@ -8,6 +9,12 @@ void Scene::commit() {
 	bvh.build(std::move(objects), leaf_size);
 	accelerator = Accelerator<Instance>(bvh);
 	objects.clear();
+}
+
+bool Scene::occluded(const Ray& ray) const {
+	bool blocked = accelerator.occluded(bvh, ray);
+	report<Shadow_Ray_Tested>(blocked, ray); // the ray lifecycle (--follow-pixel) shows shadow rays
+	return blocked;
 }
 
 Spectrum Scene::environment_radiance(Vec3 dir) const {

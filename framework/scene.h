@@ -59,9 +59,7 @@ struct Scene {
 		return accelerator.hit(bvh, ray);
 	}
 	// Whether anything is hit with t in ray.dist_bounds (it may stop at the first hit found).
-	bool occluded(const Ray& ray) const {
-		return accelerator.occluded(bvh, ray);
-	}
+	bool occluded(const Ray& ray) const;
 	// Radiance from the environment along dir (0 without an environment).
 	Spectrum environment_radiance(Vec3 dir) const;
 

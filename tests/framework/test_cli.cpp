@@ -192,7 +192,7 @@ TEST_CASE("cli: bad input gives one 'error:' line naming the problem, a non-zero
 		{{"sphere.json", "--threads", "-2"}, {"--threads", "-2"}},
 		{{"sphere.json", "--exposure", "bright"}, {"--exposure", "bright"}},
 		{{"sphere.json", "--exposure", "inf"}, {"--exposure", "inf"}},
-		{{"sphere.json", "--view", "albedo"}, {"--view", "albedo"}},
+		{{"sphere.json", "--view", "depth"}, {"--view", "depth", "albedo"}}, // the message lists the views
 		{{"sphere.json", "--out", "image.jpg"}, {"--out", ".png"}},
 		{{"sphere.json", "--exr", "image.png"}, {"--exr", ".exr"}},
 		{{"sphere.json", "--pass", "2/4"}, {"--pass 2/4", "--film"}},

@@ -95,8 +95,10 @@ void how_to_read(std::ostream& out) {
 	    << " too dark beyond the critical |z| (the pixel fails), " << key(not_a_number)
 	    << " not a number. The critical |z| (under each heat map) keeps the chance that a correct render fails "
 	       "anywhere below "
-	    << 100 * IMAGE_ALPHA << "% (a Šidák correction over all pixel channels); the image passes when at most "
-	    << 100 * (1 - IMAGE_MIN_PASS_FRACTION) << "% of its pixel channels fail.</p>\n</details>\n";
+	    << 100 * IMAGE_ALPHA
+	    << "% (a Šidák correction over all pixel channels); a few pixels beyond it are normal (a rare bright "
+	       "path), and the image passes while they are no more than correct renders have and its noise is no "
+	       "more than the reference's.</p>\n</details>\n";
 }
 
 // A message on its own; a very long one folds away after its first line.

@@ -113,3 +113,5 @@ Image_Comparison compare_estimators(const Image_Estimate& noisier, const Image_E
 // differ, e.g. the grade report's heat map): 0 where the means are equal, ±infinity where a pixel
 // has no finite sample, NaN where the render's mean is NaN. Same sizes required.
 HDR_Image z_scores(const Image_Estimate& render, const Image_Estimate& reference);
+// The same as compare_estimators computes it (the larger of the two per-sample variances).
+HDR_Image estimator_z_scores(const Image_Estimate& noisier, const Image_Estimate& other);

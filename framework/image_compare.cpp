@@ -1,7 +1,7 @@
 #include "image_compare.h"
 
 #include "film.h"
-#include "statistics.h"
+#include "significance.h"
 
 #include <algorithm>
 #include <cmath>
@@ -176,11 +176,21 @@ Image_Comparison compare_estimators(const Image_Estimate& noisier, const Image_E
 	return c;
 }
 
-HDR_Image z_scores(const Image_Estimate& render, const Image_Estimate& reference) {
+namespace {
+HDR_Image z_image(const Image_Estimate& render, const Image_Estimate& reference, Noise_Source source) {
 	require_same_size("z_scores", render.mean, reference.mean);
 	HDR_Image z(render.mean.w, render.mean.h);
 	for (size_t i = 0; i < z.pixels.size(); i++) {
-		for (int ch = 0; ch < 3; ch++) z.pixels[i][ch] = float(channel_z(render, reference, i, ch, Noise_Source::reference));
+		for (int ch = 0; ch < 3; ch++) z.pixels[i][ch] = float(channel_z(render, reference, i, ch, source));
 	}
 	return z;
+}
+} // namespace
+
+HDR_Image z_scores(const Image_Estimate& render, const Image_Estimate& reference) {
+	return z_image(render, reference, Noise_Source::reference);
+}
+
+HDR_Image estimator_z_scores(const Image_Estimate& noisier, const Image_Estimate& other) {
+	return z_image(noisier, other, Noise_Source::larger_of_the_two);
 }

@@ -1,5 +1,6 @@
 #pragma once
-// A picture of where a render differs from its reference (the grade report's heat map): per pixel,
+// A picture of where a render differs from its reference (the grade report's heat map, the live
+// viewer's z-map): per pixel,
 // the channel with the largest |z| (image_compare.h) on a diverging colour scale,
 //
 //     |z| <= z_critical:  white (z = 0) fading to pale red (z > 0: too bright) or pale blue (z < 0:
@@ -12,6 +13,7 @@
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 using Srgb8 = std::array<uint8_t, 3>;
 
@@ -27,6 +29,9 @@ constexpr Srgb8 not_a_number{0, 0, 0};
 
 // The colour of one pixel's z.
 Srgb8 z_colour(float z, double z_critical);
+
+// The colours of a z image (z_scores), pixel by pixel: what the page of ./lab view shows.
+std::vector<Srgb8> z_colours_of(const HDR_Image& z, double z_critical);
 
 // The heat map of a z image (z_scores), in linear values that write_png turns back into exactly
 // these sRGB colours (write it with exposure 0).

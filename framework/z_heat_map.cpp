@@ -34,10 +34,17 @@ Srgb8 z_colour(float z, double z_critical) {
 	return mix(zero, z > 0 ? noise_too_bright : noise_too_dark, std::abs(z) / z_critical);
 }
 
+std::vector<Srgb8> z_colours_of(const HDR_Image& z, double z_critical) {
+	std::vector<Srgb8> colours(z.pixels.size());
+	for (size_t i = 0; i < z.pixels.size(); i++) colours[i] = z_colour(most_significant(z.pixels[i]), z_critical);
+	return colours;
+}
+
 HDR_Image z_heat_map(const HDR_Image& z, double z_critical) {
 	HDR_Image map(z.w, z.h);
-	for (size_t i = 0; i < z.pixels.size(); i++) {
-		Srgb8 colour = z_colour(most_significant(z.pixels[i]), z_critical);
+	std::vector<Srgb8> colours = z_colours_of(z, z_critical);
+	for (size_t i = 0; i < colours.size(); i++) {
+		const Srgb8& colour = colours[i];
 		map.pixels[i] = Spectrum(srgb_decode(colour[0]), srgb_decode(colour[1]), srgb_decode(colour[2]));
 	}
 	return map;

@@ -1,0 +1,20 @@
+# Writes OUTPUT, a C++ file that defines page_file() (page_files.h) over the files given in FILES
+# (a ;-list of paths), each as an array of bytes: run by CMake at build time, whenever a page file
+# changes (framework/viewer/CMakeLists.txt).
+set(code "// Written by page_files.cmake from framework/viewer/page/: do not edit.\n#include \"page_files.h\"\n\n#include <map>\n#include <string>\n\nnamespace {\n")
+set(entries "")
+set(n 0)
+foreach(file IN LISTS FILES)
+	get_filename_component(name ${file} NAME)
+	file(READ ${file} hex HEX)
+	string(LENGTH "${hex}" length)
+	math(EXPR bytes "${length} / 2")
+	string(REGEX REPLACE "([0-9a-f][0-9a-f])" "'\\\\x\\1'," hex "${hex}")
+	string(APPEND code "const char file_${n}[${bytes} + 1] = {${hex} 0};\n")
+	string(APPEND entries "\t\t{\"${name}\", std::string_view(file_${n}, ${bytes})},\n")
+	math(EXPR n "${n} + 1")
+endforeach()
+string(APPEND code "} // namespace\n\nconst std::string_view* page_file(std::string_view name) {\n\tstatic const std::map<std::string, std::string_view, std::less<>> files{\n${entries}\t};\n\tauto found = files.find(name);\n\treturn found == files.end() ? nullptr : &found->second;\n}\n")
+file(WRITE ${OUTPUT}.new "${code}")
+file(COPY_FILE ${OUTPUT}.new ${OUTPUT} ONLY_IF_DIFFERENT)
+file(REMOVE ${OUTPUT}.new)
