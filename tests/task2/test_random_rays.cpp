@@ -52,13 +52,15 @@ struct Tally {
 	size_t wrong = 0, either = 0, hits = 0;
 	std::string first;
 
-	void add(const Expectation& e, const Trace& got, const Ray& ray, const std::string& shape, const char* section) {
+	// describe_shape(): the shape in words, asked for only for the first wrong answer.
+	template<class Describe>
+	void add(const Expectation& e, const Trace& got, const Ray& ray, Describe describe_shape, const char* section) {
 		either += e.verdict == Verdict::either;
 		hits += got.hit;
 		std::string problem = hit_problem(e, got, ray, section);
 		if (problem.empty() || wrong++ > 0) return;
 		std::ostringstream out;
-		out << shape << ", ray " << show(ray) << ": " << problem;
+		out << describe_shape() << ", ray " << show(ray) << ": " << problem;
 		first = out.str();
 	}
 };
@@ -105,9 +107,10 @@ TEST_CASE("Triangle::hit agrees with the reference on 10^5 random rays", "[fn:Tr
 	Tally tally;
 	for (size_t i = 0; i < queries.size(); i++) {
 		const auto& [tri, ray] = queries[i];
-		tally.add(expect_hit(tri, ray), got[i], ray,
-		          "triangle " + show(tri.v0.position) + ", " + show(tri.v1.position) + ", " + show(tri.v2.position),
-		          "handout §2.1");
+		auto shape = [&] {
+			return "triangle " + show(tri.v0.position) + ", " + show(tri.v1.position) + ", " + show(tri.v2.position);
+		};
+		tally.add(expect_hit(tri, ray), got[i], ray, shape, "handout §2.1");
 	}
 	INFO(tally.wrong << " of " << RAYS << " rays got a wrong answer (" << tally.either << " rays within rounding of an "
 	     "edge or bound were accepted either way; " << tally.hits << " hits). First: " << tally.first);
@@ -134,10 +137,13 @@ TEST_CASE("Sphere::hit agrees with the reference on 10^5 random rays", "[fn:Sphe
 	Tally tally;
 	for (size_t i = 0; i < queries.size(); i++) {
 		const auto& [sphere, ray] = queries[i];
-		std::ostringstream shape;
-		shape.precision(9);
-		shape << "sphere of radius " << sphere.radius;
-		tally.add(expect_hit(sphere, ray), got[i], ray, shape.str(), "handout §2.2");
+		auto shape = [&] {
+			std::ostringstream out;
+			out.precision(9);
+			out << "sphere of radius " << sphere.radius;
+			return out.str();
+		};
+		tally.add(expect_hit(sphere, ray), got[i], ray, shape, "handout §2.2");
 	}
 	INFO(tally.wrong << " of " << RAYS << " rays got a wrong answer (" << tally.either << " rays within rounding of "
 	     "the silhouette or a bound were accepted either way; " << tally.hits << " hits). First: " << tally.first);
