@@ -139,8 +139,8 @@ void stream(const Scene& scene, const Cli_Options& options, std::ostream& out) {
 	progressive.render.threads = options.threads;
 	progressive.samples = pathtracer.settings.samples;
 	progressive.batch_seconds = STREAM_BATCH_SECONDS;
-	progressive.frame = [&](const Film& film, uint32_t samples, double seconds) {
-		write_frame(out, film, samples, seconds);
+	progressive.frame = [&](const Film_Frame& frame) {
+		write_frame(out, frame);
 		return bool(out); // false: the viewer went away
 	};
 	render_progressively(pathtracer, progressive);

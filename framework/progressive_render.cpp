@@ -17,8 +17,8 @@ using Clock = std::chrono::steady_clock;
 // The batches' sample ranges, decided as they are first needed, and the frames being filled.
 class Batches {
 public:
-	Batches(const Progressive_Options& options, const Film& blank, size_t tiles)
-		: options(options), blank(blank), tiles(tiles), start(Clock::now()) {
+	Batches(const Progressive_Options& options, uint32_t width, uint32_t height, size_t tiles)
+		: options(options), width(width), height(height), tiles(tiles), start(Clock::now()) {
 	}
 
 	// The end of batch b's samples (its first is the end of batch b - 1), or 0 past the last batch.
@@ -36,19 +36,21 @@ public:
 	}
 
 	// Copies the tile's pixels, which have just finished batch b, into batch b's frame (before the
-	// tile may start its next batch).
+	// tile may start its next batch). Frames that have been handed on are reused.
 	void copy_tile(size_t b, const Tile& tile, const Film& film) {
-		Film* frame;
+		Film_Frame* frame;
 		{
 			std::lock_guard<std::mutex> lock(mutex);
 			auto& slot = frames[b];
-			if (!slot.film) slot.film = std::make_unique<Film>(blank);
-			frame = slot.film.get();
+			if (!slot.frame && !spare.empty()) {
+				slot.frame = std::move(spare.back());
+				spare.pop_back();
+			}
+			if (!slot.frame) slot.frame = std::make_unique<Film_Frame>(width, height);
+			frame = slot.frame.get();
 		}
 		for (uint32_t y = tile.y0; y < tile.y1; y++) {
-			size_t row = size_t(y) * film.w;
-			std::copy(film.pixels.begin() + row + tile.x0, film.pixels.begin() + row + tile.x1,
-			          frame->pixels.begin() + row + tile.x0);
+			for (uint32_t x = tile.x0; x < tile.x1; x++) frame->set_pixel(size_t(y) * film.w + x, film);
 		}
 	}
 
@@ -61,15 +63,16 @@ public:
 		while (!stopped && !handing) {
 			auto next = frames.find(next_to_hand);
 			if (next == frames.end() || next->second.tiles_in < tiles) break;
-			std::unique_ptr<Film> done = std::move(next->second.film);
+			std::unique_ptr<Film_Frame> done = std::move(next->second.frame);
 			frames.erase(next);
-			uint32_t samples = ends[next_to_hand];
-			double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-			measured_samples = samples, measured_seconds = seconds;
+			done->samples = ends[next_to_hand];
+			done->seconds = std::chrono::duration<double>(Clock::now() - start).count();
+			measured_samples = done->samples, measured_seconds = done->seconds;
 			handing = true;
 			lock.unlock();
-			bool go_on = options.frame(*done, samples, seconds);
+			bool go_on = options.frame(*done);
 			lock.lock();
+			spare.push_back(std::move(done));
 			handing = false;
 			next_to_hand++;
 			if (!go_on) stopped = true;
@@ -98,17 +101,18 @@ private:
 	}
 
 	struct Frame_Slot {
-		std::unique_ptr<Film> film;
+		std::unique_ptr<Film_Frame> frame;
 		size_t tiles_in = 0;
 	};
 
 	const Progressive_Options& options;
-	const Film& blank;
+	const uint32_t width, height;
 	const size_t tiles;
 	const Clock::time_point start;
 	std::mutex mutex;
 	std::vector<uint32_t> ends;
 	std::map<size_t, Frame_Slot> frames;
+	std::vector<std::unique_ptr<Film_Frame>> spare; // handed on, to be reused
 	double measured_samples = 0.0, measured_seconds = 0.0;
 	size_t next_to_hand = 0; // the batch whose frame is handed on next
 	bool stopped = false, handing = false;
@@ -118,11 +122,10 @@ private:
 void render_progressively(const Pathtracer& pathtracer, const Progressive_Options& options) {
 	const Render_Settings& settings = pathtracer.settings;
 	Film film(settings.width, settings.height);
-	const Film blank(settings.width, settings.height);
 	uint32_t threads = options.render.threads ? options.render.threads : std::max(1u, std::thread::hardware_concurrency());
 	std::vector<Tile> tiles = make_tiles(settings.width, settings.height, tile_size(settings, options.render, threads));
 	threads = std::min<uint32_t>(threads, uint32_t(tiles.size()));
-	Batches batches(options, blank, tiles.size());
+	Batches batches(options, settings.width, settings.height, tiles.size());
 	// The batches each tile has finished; a tile's next batch waits for its last (rarely: only when
 	// the thread that had it was descheduled for as long as all the other tiles took).
 	std::vector<std::atomic<size_t>> finished(tiles.size());

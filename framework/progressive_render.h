@@ -1,6 +1,7 @@
 #pragma once
 // Progressive rendering without pauses (./lab view, --stream): the samples of every pixel in
-// batches, a copy of the film after each batch, and no thread waiting for the others in between.
+// batches, a frame of the film (film_frame.h) after each batch, and no thread waiting for the
+// others in between.
 //
 // Work is (batch, tile) pairs taken in order; a tile starts its next batch as soon as it has
 // finished this one, whatever the other tiles are doing, so that a thread never idles at the end
@@ -9,7 +10,7 @@
 // tile into that batch's frame; the frame is handed on once every tile has been copied. Each
 // pixel's samples are still added in index order with render()'s generators, so frame after frame
 // is bit for bit render()'s film with that many samples.
-#include "film.h"
+#include "film_frame.h"
 #include "render.h"
 
 #include <functional>
@@ -19,9 +20,9 @@ struct Progressive_Options {
 	uint32_t samples = 0;           // samples per pixel of the last frame
 	double batch_seconds = 0.25;    // the time a batch should take, once the speed is known
 	// Called with each frame in batch order (never two at once): the film with exactly
-	// `samples` samples in every pixel, and the seconds since the render began. Returning false
+	// frame.samples samples in every pixel, frame.seconds after the render began. Returning false
 	// stops the render.
-	std::function<bool(const Film& film, uint32_t samples, double seconds)> frame;
+	std::function<bool(const Film_Frame& frame)> frame;
 };
 
 // Renders options.samples samples of every pixel; the first batch has one sample per pixel (the

@@ -23,8 +23,8 @@ TEST_CASE("A film frame reads back as the film's estimate the graders compare, f
 	Film film = small_film();
 	Image_Estimate written = Image_Estimate::from(film); // what the graders compare
 	std::stringstream pipe;
-	write_frame(pipe, film, 6, 0.25);
-	write_frame(pipe, film, 6, 0.25);
+	write_frame(pipe, Film_Frame::from(film, 6, 0.25));
+	write_frame(pipe, Film_Frame::from(film, 6, 0.25));
 	Film_Frame read;
 	for (int frame = 0; frame < 2; frame++) {
 		REQUIRE(read_frame(pipe, read));
@@ -45,11 +45,11 @@ TEST_CASE("A film frame reads back as the film's estimate the graders compare, f
 
 TEST_CASE("A film stream cut inside a frame, or that is not one, is an error that says so", "[film_stream]") {
 	std::stringstream pipe;
-	write_frame(pipe, small_film(), 6, 0.25);
+	write_frame(pipe, Film_Frame::from(small_film(), 6, 0.25));
 	std::string bytes = pipe.str();
 	std::stringstream cut(bytes.substr(0, bytes.size() - 5));
 	Film_Frame frame;
-	CHECK_THROWS_WITH(read_frame(cut, frame), Catch::Contains("ended inside a frame's pixels"));
+	CHECK_THROWS_WITH(read_frame(cut, frame), Catch::Contains("ended inside a frame's non-finite counts"));
 	std::stringstream text("loaded scenes/cornell_box.json in 0.01 s\n........................................");
 	CHECK_THROWS_WITH(read_frame(text, frame), Catch::Contains("must start with \"LABF\""));
 }

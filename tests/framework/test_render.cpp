@@ -301,18 +301,20 @@ TEST_CASE("A progressive render hands on, batch after batch, render()'s film wit
 		options.samples = settings.samples;
 		options.batch_seconds = 1e-9; // one sample per batch: the most frames
 		std::vector<uint32_t> counts;
-		options.frame = [&](const Film& film, uint32_t samples, double seconds) {
-			counts.push_back(samples);
+		options.frame = [&](const Film_Frame& frame) {
+			counts.push_back(frame.samples);
 			Render_Settings partial = settings;
-			partial.samples = samples;
-			Film expected = render(Pathtracer(scene, partial, View::path));
-			for (size_t i = 0; i < film.pixels.size(); i++) {
-				INFO("frame of " << samples << " samples, pixel " << i << ", " << threads << " threads");
-				REQUIRE(film.pixels[i].count == samples);
-				REQUIRE(std::memcmp(&film.pixels[i].mean, &expected.pixels[i].mean, sizeof(glm::dvec3)) == 0);
-				REQUIRE(std::memcmp(&film.pixels[i].m2, &expected.pixels[i].m2, sizeof(glm::dvec3)) == 0);
+			partial.samples = frame.samples;
+			Film_Frame expected = Film_Frame::from(render(Pathtracer(scene, partial, View::path)), frame.samples, 0.0);
+			for (size_t i = 0; i < expected.non_finite.size(); i++) {
+				INFO("frame of " << frame.samples << " samples, pixel " << i << ", " << threads << " threads");
+				REQUIRE(frame.estimate.samples[i] == frame.samples);
+				REQUIRE(std::memcmp(&frame.estimate.mean.pixels[i], &expected.estimate.mean.pixels[i], sizeof(Spectrum)) == 0);
+				REQUIRE(std::memcmp(&frame.estimate.variance.pixels[i], &expected.estimate.variance.pixels[i],
+				                    sizeof(Spectrum)) == 0);
+				REQUIRE(frame.non_finite[i] == expected.non_finite[i]);
 			}
-			CHECK(seconds >= 0.0);
+			CHECK(frame.seconds >= 0.0);
 			return true;
 		};
 		render_progressively(pathtracer, options);
@@ -330,9 +332,9 @@ TEST_CASE("A progressive render stops when its frame handler says so", "[render]
 	options.samples = settings.samples;
 	options.batch_seconds = 1e-9;
 	std::vector<uint32_t> counts;
-	options.frame = [&](const Film&, uint32_t samples, double) {
-		counts.push_back(samples);
-		return samples < 3; // the viewer went away after the third frame
+	options.frame = [&](const Film_Frame& frame) {
+		counts.push_back(frame.samples);
+		return frame.samples < 3; // the viewer went away after the third frame
 	};
 	render_progressively(pathtracer, options);
 	CHECK(counts == std::vector<uint32_t>{1, 2, 3});
@@ -355,8 +357,8 @@ TEST_CASE("An exception thrown on any of a render's threads reaches its caller, 
 		progressive.render = threads_and_tiles(threads, 4);
 		progressive.samples = 20;
 		progressive.batch_seconds = 1e-9;
-		progressive.frame = [](const Film&, uint32_t samples, double) {
-			if (samples == 2) throw std::runtime_error("thrown with a frame");
+		progressive.frame = [](const Film_Frame& frame) {
+			if (frame.samples == 2) throw std::runtime_error("thrown with a frame");
 			return true;
 		};
 		CHECK_THROWS_WITH(render_progressively(pathtracer, progressive), "thrown with a frame");
