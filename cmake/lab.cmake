@@ -27,6 +27,9 @@ function(lab_defaults target)
 	endif()
 endfunction()
 
+# Where the task files' first includes are precompiled (tasks/CMakeLists.txt).
+set(LAB_PRECOMPILED_DIR ${PROJECT_BINARY_DIR}/precompiled)
+
 # The seven task files. Each is compiled once per implementation (student/ and reference/) into an
 # object library named task<N>_<impl>; programs choose one implementation per task at link time.
 set(LAB_TASK_FILES

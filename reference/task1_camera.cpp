@@ -1,6 +1,6 @@
 // Task 1: camera rays. Handout: handouts/task1_camera.md
-#include "camera.h"
 #include "pathtracer.h"
+#include "camera.h"
 
 Ray Camera::generate_ray(Vec2 film_uv) const {
 	// The image plane z = -1 spans y in [-h, h] with h = tan(v_fov / 2) (the half angle seen from

@@ -1,7 +1,7 @@
 // Task 4: path tracing. Handout: handouts/task4_path.md
+#include "pathtracer.h"
 #include "frame.h"
 #include "material.h"
-#include "pathtracer.h"
 
 #include <algorithm>
 

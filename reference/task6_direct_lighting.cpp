@@ -1,6 +1,6 @@
 // Task 6: direct lighting. Handout: handouts/task6_direct_lighting.md
-#include "frame.h"
 #include "pathtracer.h"
+#include "frame.h"
 
 Incoming_Sample Pathtracer::sample_incoming(RNG& rng, const Trace& hit, const BSDF& bsdf, Vec3 out_dir) const {
 	// BSDFs work in the local frame (normal +y), lights in world space (handout §6.3).

@@ -1,6 +1,6 @@
 // Task 1: camera rays. Handout: handouts/task1_camera.md
-#include "camera.h"
 #include "pathtracer.h"
+#include "camera.h"
 
 namespace {
 // Your helper functions go here. The anonymous namespace keeps them private to this file: two task

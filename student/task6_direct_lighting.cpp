@@ -1,6 +1,6 @@
 // Task 6: direct lighting. Handout: handouts/task6_direct_lighting.md
-#include "frame.h"
 #include "pathtracer.h"
+#include "frame.h"
 
 namespace {
 // Your helper functions go here. The anonymous namespace keeps them private to this file: two task
