@@ -30,7 +30,8 @@ function(lab_mutant_source mutant reference_file stub_file output)
 	# The header: every line before the first "find:".
 	string(FIND "${text}" "\nfind:\n" header_end)
 	if(header_end EQUAL -1)
-		message(FATAL_ERROR "${mutant}: no edit (a line 'find:' after the header; tests/mutants/README.md)")
+		message(FATAL_ERROR "${mutant}: no edit (a line 'find:' after the header, "
+			"tests/mutants/README.md)")
 	endif()
 	string(SUBSTRING "${text}" 0 ${header_end} header)
 	if(NOT header MATCHES "(^|\n)mutant: ([^\n]+)")
@@ -100,8 +101,8 @@ function(lab_mutant_source mutant reference_file stub_file output)
 		if(found EQUAL -1)
 			message(NOTICE "${where}: its find block:\n${find}") # verbatim: FATAL_ERROR rewraps
 			message(FATAL_ERROR "${where}: its find block (above) occurs 0 times in ${base}; it must "
-				"occur exactly once, as whole lines. The ${base_kind} has changed since the mutant was written: "
-				"express the same mistake as an edit of the current file (tests/mutants/README.md).")
+				"occur exactly once, as whole lines. The ${base_kind} has changed since the mutant was "
+				"written: express the same mistake as an edit of the current file (tests/mutants/README.md).")
 		endif()
 		math(EXPR after_first "${found} + 1")
 		string(SUBSTRING "\n${source}" ${after_first} -1 later)
@@ -112,8 +113,8 @@ function(lab_mutant_source mutant reference_file stub_file output)
 			lab_mutant_line_at("${source}" ${second} second_line)
 			message(NOTICE "${where}: its find block:\n${find}")
 			message(FATAL_ERROR "${where}: its find block (above) occurs more than once in ${base}, at "
-				"lines ${first_line} and ${second_line}; it must occur exactly once. Add a neighbouring line "
-				"that tells the places apart (tests/mutants/README.md).")
+				"lines ${first_line} and ${second_line}; it must occur exactly once. Add a neighbouring "
+				"line that tells the places apart (tests/mutants/README.md).")
 		endif()
 		string(LENGTH "${find}" find_length)
 		math(EXPR suffix_start "${found} + ${find_length}")
