@@ -14,14 +14,14 @@ function(lab_mutant_line_at text offset out)
 	set(${out} ${line} PARENT_SCOPE)
 endfunction()
 
-# lab_mutant_source(<mutant> <reference_file> <stub_file> <output>): reads the .mutant file
-# <mutant>, applies its edits in order to its base (<reference_file>, or <stub_file> for
-# "base: stub") and writes the result to <output>, below a comment that names the mistake.
-# <output> is rewritten only when its text changes, so a reconfigure rebuilds only the mutants that
-# changed. The base and the .mutant file become configure dependencies: editing either re-applies
-# the edits. Configuration stops, naming the .mutant file, its line and the base, if the file is
-# malformed or a find block does not occur in the base exactly once.
-function(lab_mutant_source mutant reference_file stub_file output)
+# lab_mutant_source(<mutant> <base> <output>): reads the .mutant file <mutant>, applies its edits
+# in order to <base> (the reference's task file) and writes the result to <output>, below a comment
+# that names the mistake. <output> is rewritten only when its text changes, so a reconfigure
+# rebuilds only the mutants that changed. The base and the .mutant file become configure
+# dependencies: editing either re-applies the edits. Configuration stops, naming the .mutant file,
+# its line and the base, if the file is malformed or a find block does not occur in the base exactly
+# once.
+function(lab_mutant_source mutant base output)
 	file(READ "${mutant}" text)
 	if(NOT text MATCHES "\n$")
 		string(APPEND text "\n")
@@ -40,17 +40,6 @@ function(lab_mutant_source mutant reference_file stub_file output)
 	set(description "${CMAKE_MATCH_2}")
 	if(NOT header MATCHES "(^|\n)why: [^\n]+")
 		message(FATAL_ERROR "${mutant}: the header has no line 'why: <why a student would make it>'")
-	endif()
-	set(base_kind reference)
-	if(header MATCHES "(^|\n)base: ([^\n]*)")
-		set(base_kind "${CMAKE_MATCH_2}")
-	endif()
-	if(base_kind STREQUAL "reference")
-		set(base "${reference_file}")
-	elseif(base_kind STREQUAL "stub")
-		set(base "${stub_file}")
-	else()
-		message(FATAL_ERROR "${mutant}: 'base: ${base_kind}': the base is reference or stub")
 	endif()
 	set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${mutant}" "${base}")
 	file(READ "${base}" source)
@@ -101,7 +90,7 @@ function(lab_mutant_source mutant reference_file stub_file output)
 		if(found EQUAL -1)
 			message(NOTICE "${where}: its find block:\n${find}") # verbatim: FATAL_ERROR rewraps
 			message(FATAL_ERROR "${where}: its find block (above) occurs 0 times in ${base}; it must "
-				"occur exactly once, as whole lines. The ${base_kind} has changed since the mutant was "
+				"occur exactly once, as whole lines. The reference has changed since the mutant was "
 				"written: express the same mistake as an edit of the current file (tests/mutants/README.md).")
 		endif()
 		math(EXPR after_first "${found} + 1")

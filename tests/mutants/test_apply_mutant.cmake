@@ -17,7 +17,7 @@ set(failures 0)
 # apply(<fixture>): applies fixtures/<fixture>.mutant; sets result and output (its stderr).
 macro(apply fixture)
 	execute_process(COMMAND ${CMAKE_COMMAND} -DMUTANT=${fixtures}/${fixture}.mutant
-		-DREFERENCE=${fixtures}/base.cpp -DSTUB=${fixtures}/base.cpp -DOUTPUT=${WORK}/${fixture}.cpp
+		-DREFERENCE=${fixtures}/base.cpp -DOUTPUT=${WORK}/${fixture}.cpp
 		-P ${apply} RESULT_VARIABLE result ERROR_VARIABLE output)
 endmacro()
 
@@ -54,10 +54,10 @@ endif()
 # Each malformed or unmatched fixture stops with a message that names it, its edit and the problem.
 # <fixture>|<line of the failing edit's "find:">|<edit>|<the problem, as the message says it>
 set(expected_failures
-	"not_found|5|1|occurs 0 times in ${fixtures}/base.cpp"
-	"part_of_a_line|5|1|occurs 0 times in ${fixtures}/base.cpp"
-	"found_twice|11|2|occurs more than once in ${fixtures}/base.cpp, at lines 10 and 17"
-	"no_end|5|1|no line 'end' before the next 'find:'")
+	"not_found|4|1|occurs 0 times in ${fixtures}/base.cpp"
+	"part_of_a_line|4|1|occurs 0 times in ${fixtures}/base.cpp"
+	"found_twice|10|2|occurs more than once in ${fixtures}/base.cpp, at lines 10 and 17"
+	"no_end|4|1|no line 'end' before the next 'find:'")
 foreach(entry IN LISTS expected_failures)
 	string(REPLACE "|" ";" fields "${entry}")
 	list(GET fields 0 fixture)
