@@ -29,9 +29,9 @@ cmake --build "$objects" --parallel "$jobs" --target "${archives[@]}" >&2
 
 # The tree: everything but reference/, the framework's code that carries task algorithms
 # (framework/sealed/, framework/accel/fast/: shipped compiled), the instructors' tests (stress,
-# images, crosscheck, fuzz, export, isolation, mutants, security, class, gradescope) and the
-# benchmarks. tests/judge runs the graders; tests/report is the grade report (./lab report), whose
-# test in Chromium is registered only where reference/ exists.
+# images, crosscheck, fuzz, export, isolation, mutants, security, class, gradescope; the mutants'
+# edits quote the reference) and the benchmarks. tests/judge runs the graders; tests/report is the
+# grade report (./lab report), whose test in Chromium is registered only where reference/ exists.
 mkdir -p "$dest/tests" "$dest/prebuilt" "$dest/tools"
 (cd "$root" && cp -R CMakeLists.txt CMakePresets.json lab cmake framework tasks student scenes handouts "$dest/")
 rm -r "$dest/framework/sealed" "$dest/framework/accel/fast"

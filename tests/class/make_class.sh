@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # A synthetic class for the class-grading tests (labels class, parallel, slurm):
-#   make_class.sh REPOSITORY_ROOT OUT small|full
+#   make_class.sh REPOSITORY_ROOT OUT small|full MUTANTS
 # writes OUT/submissions/<id>/ and OUT/expected.csv, what each must score: per task "full" (the
 # task's points), "zero", or "less" (a realistic mistake: fewer than full).
 #   full   (./lab acceptance) 23 submissions: all reference, all stubs, files that are not task
-#          files, each task alone, mixtures, realistic mistakes (tests/mutants/) and hostile files
+#          files, each task alone, mixtures, realistic mistakes (the mutants' sources in MUTANTS, the
+#          build's mutants/ folder, made at configure time from tests/mutants/) and hostile files
 #          (tests/security/hostile/), the other tasks being the reference;
 #   small  (./lab test) four of them whose gradebook rows all differ: every task scored full, zero
 #          and less somewhere, a hostile file, files that are not task files; enough to prove that
@@ -13,6 +14,7 @@ set -euo pipefail
 root=$1
 out=$2
 size=$3
+mutants=$4
 [[ $size == small || $size == full ]] || { echo "make_class.sh: the class is small or full, not '$size'" >&2; exit 2; }
 files=(task1_camera.cpp task2_shapes.cpp task3_bvh.cpp task4_path.cpp task5_materials.cpp
 	task6_direct_lighting.cpp task7_env_light.cpp)
@@ -48,7 +50,7 @@ stubs_and_notes() { # the stubs, with files that are not task files
 mutant() { # mutant TASK NAME
 	local expect=full,full,full,full,full,full,full
 	expect=$(echo "$expect" | awk -F, -v n="$1" 'BEGIN { OFS = "," } { $n = "less"; print }')
-	submission "mistake_task$1_$2" "$expect" "$1=$root/tests/mutants/task$1/$2.cpp"
+	submission "mistake_task$1_$2" "$expect" "$1=$mutants/task$1/$2.cpp"
 }
 
 hostile() { # hostile TASK FILE

@@ -4,14 +4,15 @@
 # (nothing is graded again, the gradebook is the same); a submission graded again gets the same
 # scores and messages. Leaves the class and its gradebook (OUT/gradebook.csv) for the GNU parallel
 # and Slurm tests (ctest fixtures "class_graded", "class_full_graded").
-#   test_class.sh REPOSITORY_ROOT KIT OUT small|full
+#   test_class.sh REPOSITORY_ROOT KIT OUT small|full MUTANTS
+# MUTANTS: the mutants' sources, made at configure time (BUILD/mutants, tests/mutants/README.md).
 set -euo pipefail
-root=$1 kit=$2 out=$3 size=$4
+root=$1 kit=$2 out=$3 size=$4 mutants=$5
 here=$(cd "$(dirname "$0")" && pwd)
 fail() { echo "class test: $*" >&2; exit 1; }
 rm -rf "$out"
 mkdir -p "$out"
-bash "$here/make_class.sh" "$root" "$out/class" "$size"
+bash "$here/make_class.sh" "$root" "$out/class" "$size" "$mutants"
 minimum=4
 [ "$size" = small ] || minimum=20
 export KIT=$kit

@@ -30,6 +30,8 @@ for n in 1 2 3 4 5 6 7; do
 	[ -f "$release/prebuilt/libtask${n}_reference.a" ] || fail "prebuilt/libtask${n}_reference.a is missing"
 done
 [ ! -e "$release/framework/accel/fast" ] || fail "the release has the fast accelerator's source, framework/accel/fast/"
+# The mutants' edits quote the reference line by line (tests/mutants/README.md).
+[ ! -e "$release/tests/mutants" ] || fail "the release has the instructors' mutants, tests/mutants/"
 [ -f "$release/prebuilt/libaccelerator_fast.a" ] || fail "prebuilt/libaccelerator_fast.a is missing"
 [ -f "$release/prebuilt/libintegrator_nee.a" ] || fail "prebuilt/libintegrator_nee.a is missing"
 # Code lines (not comments) of reference/ long enough to be distinctive, absent from the stubs and

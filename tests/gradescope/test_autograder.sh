@@ -4,9 +4,10 @@
 # (/autograder/source, submission, results), runs its setup.sh and then run_autograder for example
 # submissions, and each results.json must hold the expected score (all reference: full marks; the
 # stubs: 0; one realistic mistake: fewer) with one entry per test case of the rubric.
-#   test_autograder.sh REPOSITORY_ROOT OUT
+#   test_autograder.sh REPOSITORY_ROOT OUT MUTANTS
+# MUTANTS: the mutants' sources, made at configure time (BUILD/mutants, tests/mutants/README.md).
 set -euo pipefail
-root=$1 out=$2
+root=$1 out=$2 mutants=$3
 fail() { echo "autograder test: $*" >&2; exit 1; }
 for program in debootstrap zip unzip chroot; do
 	command -v "$program" >/dev/null || fail "$program is not installed (Debian packages debootstrap, zip, unzip)"
@@ -78,5 +79,5 @@ grade stubs zero
 mistake=$out/mistake
 mkdir -p "$mistake"
 cp "$root"/reference/task*.cpp "$mistake/"
-cp "$root/tests/mutants/task4/no_offset.cpp" "$mistake/task4_path.cpp"
+cp "$mutants/task4/no_offset.cpp" "$mistake/task4_path.cpp"
 grade one_mistake less "$mistake"/task*.cpp

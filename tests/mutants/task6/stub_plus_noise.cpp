@@ -3,8 +3,6 @@
 #include "frame.h"
 #include "pathtracer.h"
 
-#include "extension.h" // task 6's optional extension, as shipped
-
 namespace {
 // Your helper functions go here. The anonymous namespace keeps them private to this file: two task
 // files that each define a helper of the same name (say `lerp`) would otherwise not link together.
@@ -32,4 +30,35 @@ Incoming_Sample Pathtracer::sample_incoming(RNG& rng, const Trace& hit, const BS
 	Spectrum noise{1000.0f * (rng.unit() - 0.5f), 1000.0f * (rng.unit() - 0.5f), 1000.0f * (rng.unit() - 0.5f)};
 	return Incoming_Sample{frame.to_world(s.direction), s.attenuation + noise, bsdf.pdf(out_local, s.direction),
 	                       bsdf.is_discrete()};
+}
+
+// ---- Optional extension: next-event estimation with multiple importance sampling (handout §6.5) ---
+// Not graded with task 6: `./lab grade 6` does not look at these two functions. `ctest -L task6_nee`
+// grades them; `--integrator nee` renders with them.
+
+float power_heuristic(float pdf_f, float pdf_g) {
+	// TODO (optional, handout §6.5): Veach's power heuristic pdf_f^2 / (pdf_f^2 + pdf_g^2), 0 when
+	// pdf_f is 0 (strategy f cannot draw the direction). Squares of large densities overflow a
+	// float: divide first.
+	//
+	// Starter version: every sample keeps its whole weight. With the starter estimate_direct below
+	// (no light samples), --integrator nee is then BSDF sampling alone: correct, but noisy.
+	(void)pdf_f, (void)pdf_g;
+	return 1.0f;
+}
+
+Spectrum Pathtracer::estimate_direct(RNG& rng, const Trace& hit, const BSDF& bsdf, Vec3 out_dir) const {
+	// TODO (optional, handout §6.5): next-event estimation.
+	// 1. Light_Sample light = sample_light(rng, hit.position): a direction, the distance to the
+	//    light along it, the radiance it sends and the density of the direction. Nothing to do if the
+	//    pdf or the radiance is 0.
+	// 2. f = bsdf.evaluate(out_local, in_local), in the local frame as in sample_incoming.
+	// 3. The shadow ray from hit.position along light.direction, dist_bounds {0, SHADOW_RAY_END *
+	//    light.distance} (short of the light itself): if scene.occluded(shadow), return 0.
+	// 4. Return f * light.radiance * |cos theta| * w / light.pdf with the weight
+	//    w = power_heuristic(light.pdf, bsdf.pdf(out_local, in_local)).
+	//
+	// Starter version: no light samples (the light comes only from BSDF samples, in full).
+	(void)rng, (void)hit, (void)bsdf, (void)out_dir;
+	return Spectrum{0.0f};
 }
