@@ -8,6 +8,7 @@
 #include "judge.h"
 #include "material.h"
 #include "statistics.h"
+#include "student_overlapped.h"
 #include "student_secret_inputs.h"
 
 #include <catch2/catch.hpp>
@@ -231,12 +232,14 @@ TEST_CASE("Lambertian scatter: directions follow the cosine density |cos theta| 
 			}
 		}
 		// Asked for in chunks, each with a generator of its own, so that no request or answer is
-		// larger than a few megabytes.
+		// larger than a few megabytes; one chunk is counted while the subject samples the next.
 		size_t invalid = 0;
-		for (size_t chunk = 0; chunk < chunks; chunk++) {
+		auto chunk_request = [&](size_t chunk) {
 			RNG rng(in.seed ? in.seed : 2024, k * chunks + chunk);
-			BSDF_Scatter request{lambertian(in.albedo), std::vector<Vec3>(samples / chunks, out), rng.save()};
-			for (const Scatter& s : judge::ask(request)) {
+			return BSDF_Scatter{lambertian(in.albedo), std::vector<Vec3>(samples / chunks, out), rng.save()};
+		};
+		auto count = [&](size_t, const std::vector<Scatter>& scatters) {
+			for (const Scatter& s : scatters) {
 				Vec3 dir = s.direction;
 				if (!is_finite(dir) || std::abs(glm::length(dir) - 1.0f) > 1e-4f) {
 					invalid++;
@@ -248,7 +251,8 @@ TEST_CASE("Lambertian scatter: directions follow the cosine density |cos theta| 
 				size_t j = std::min(size_t(phi / (2.0f * float(PI)) * n_phi), n_phi - 1);
 				observed[i * n_phi + j] += 1.0;
 			}
-		}
+		};
+		ask_each_while_using_the_last(chunks, chunk_request, count);
 		INFO(invalid << " of " << samples << " sampled directions were not finite unit vectors");
 		REQUIRE(invalid == 0);
 		stats::Chi2_Result r = stats::chi2_test(observed, expected);

@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <future>
 #include <vector>
 
 using namespace env_test;
@@ -153,6 +154,8 @@ TEST_CASE("one bright texel: the weights L / pdf average the integral of its rad
 	for (const Bright_Texel& t : cases()) {
 		const size_t N = 200000;
 		const uint64_t seed = sampling_seed("bright texel weights", 80);
+		// The reference's weights are drawn while the subject samples.
+		auto reference_drawn = std::async(std::launch::async, [&] { return reference_weights(t.map(), seed, N)[1]; });
 		Env_Samples samples = student_env_samples(t.map(), true, unit_points(seed, N));
 		std::vector<double> weights;
 		size_t not_finite = 0;
@@ -165,7 +168,7 @@ TEST_CASE("one bright texel: the weights L / pdf average the integral of its rad
 			}
 			weights.push_back(weight);
 		}
-		std::vector<double> reference_samples = reference_weights(t.map(), seed, N)[1];
+		std::vector<double> reference_samples = reference_drawn.get();
 		Sample_Moments student = moments(weights), reference = moments(reference_samples);
 		double expected = radiance_integral(t), error = standard_error(reference, N);
 		double allowed = z_critical() * error + 1e-5 * expected;

@@ -2,9 +2,12 @@
 // and Env_Map with importance_sampling on).
 #include "env_test_support.h"
 #include "sphere_chi2.h"
+#include "student_overlapped.h"
 
 #include <catch2/catch.hpp>
 
+#include <future>
+#include <iterator>
 #include <vector>
 
 using namespace env_test;
@@ -154,21 +157,27 @@ TEST_CASE("Image::sample draws directions with the density Image::pdf (chi-squar
 	                          {"one bright texel at the seam and the pole", one_texel_map(32, 16, 0, 0)},
 	                          {"a gradient", gradient_map()},
 	                          {"a sky with a sun", sky_map()}};
-	uint64_t seed = 700;
-	for (const Named_Map& m : maps) {
-		stats::Sphere_Chi2_Settings settings;
-		settings.theta_cells = 2 * m.image.h;
-		settings.phi_cells = 2 * m.image.w;
-		settings.integration_resolution = 2;
-		settings.seed = sampling_seed("importance chi-square " + m.name, seed++);
-		protocol::Sampler_Answer answer = student_image_sampler(m.image, unit_points(settings.seed, settings.samples),
-		                                                        stats::sphere_chi2_pdf_directions(settings))
-		                                      .queries;
-		auto result = stats::sphere_chi2(answer.samples, answer.pdfs, settings);
-		INFO("importance samples of " << m.name << " must follow Image::pdf: choose a texel by the cdf, a uniform "
-		                                 "point inside it in uv, and let pdf divide by 2 pi^2 sin(theta) (handout §7.4). "
-		                              << result.summary() << "; significance " << chi2_alpha());
-		CHECK(result.pass(chi2_alpha()));
+	std::vector<stats::Sphere_Chi2_Settings> settings(std::size(maps));
+	for (size_t i = 0; i < settings.size(); i++) {
+		settings[i].theta_cells = 2 * maps[i].image.h;
+		settings[i].phi_cells = 2 * maps[i].image.w;
+		settings[i].integration_resolution = 2;
+		settings[i].seed = sampling_seed("importance chi-square " + maps[i].name, 700 + i);
+	}
+	auto request = [&](size_t i) {
+		return protocol::Image_Sampler{maps[i].image, unit_points(settings[i].seed, settings[i].samples),
+		                               stats::sphere_chi2_pdf_directions(settings[i])};
+	};
+	std::vector<stats::Sphere_Chi2_Result> results(std::size(maps));
+	auto count = [&](size_t i, const protocol::Image_Sampler::Answer& answer) {
+		results[i] = stats::sphere_chi2(answer.queries.samples, answer.queries.pdfs, settings[i]);
+	};
+	ask_each_while_using_the_last(std::size(maps), request, count);
+	for (size_t i = 0; i < results.size(); i++) {
+		INFO("importance samples of " << maps[i].name << " must follow Image::pdf: choose a texel by the cdf, a "
+		     "uniform point inside it in uv, and let pdf divide by 2 pi^2 sin(theta) (handout §7.4). "
+		     << results[i].summary() << "; significance " << chi2_alpha());
+		CHECK(results[i].pass(chi2_alpha()));
 	}
 }
 
@@ -186,6 +195,8 @@ TEST_CASE("a constant map: the weights L / pdf average 4 pi L and stay below twi
 	const size_t N = 200000;
 	const HDR_Image map(32, 16, L);
 	const uint64_t seed = sampling_seed("constant map", 76);
+	// The reference's weights are drawn while the subject samples.
+	auto reference_drawn = std::async(std::launch::async, [&] { return reference_weights(map, seed, N); });
 	Env_Samples samples = student_env_samples(map, true, unit_points(seed, N));
 	std::array<std::vector<double>, 3> weights;
 	size_t not_finite = 0, too_large = 0;
@@ -213,7 +224,7 @@ TEST_CASE("a constant map: the weights L / pdf average 4 pi L and stay below twi
 		CHECK(too_large == 0);
 	}
 	if (not_finite > 0) return; // the means and the noise would mislead
-	std::array<std::vector<double>, 3> reference = reference_weights(map, seed, N);
+	std::array<std::vector<double>, 3> reference = reference_drawn.get();
 	std::array<double, 3> rounding;
 	for (int c = 0; c < 3; c++) {
 		double mean = moments(weights[c]).mean, expected = 4.0 * M_PI * L[c];
