@@ -30,6 +30,10 @@ struct Judge_State {
 	size_t test_case_number = 0;
 	Subject::Clock::time_point deadline;
 	std::unique_ptr<Subject> subject;
+	// The next test case's subject, started when this one's was taken: a process as fresh as any,
+	// which has booted by the time it is asked (a sandbox takes milliseconds to start, mostly
+	// waiting for the kernel to make its namespaces).
+	std::unique_ptr<Subject> next_subject;
 	Hang_Record hangs; // over the whole run
 };
 
@@ -91,7 +95,12 @@ namespace judge {
 
 Subject& subject() {
 	Judge_State& s = state();
-	if (!s.subject) s.subject = std::make_unique<Subject>(s.program, *s.sandbox, s.deadline, s.hangs, requests_file());
+	if (!s.subject) {
+		auto start = [&] { return std::make_unique<Subject>(s.program, *s.sandbox, s.hangs); };
+		s.subject = s.next_subject ? std::move(s.next_subject) : start();
+		s.subject->begin(s.deadline, requests_file());
+		s.next_subject = start();
+	}
 	return *s.subject;
 }
 

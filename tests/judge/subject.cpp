@@ -103,9 +103,8 @@ bool wait_writable(int fd, Subject::Clock::time_point until) {
 
 } // namespace
 
-Subject::Subject(const std::string& program, const Sandbox& sandbox, Clock::time_point deadline, Hang_Record& hangs,
-                 const std::string& save_requests)
-	: sandbox(sandbox), deadline(deadline), hangs(hangs), save_requests(save_requests) {
+Subject::Subject(const std::string& program, const Sandbox& sandbox, Hang_Record& hangs)
+	: sandbox(sandbox), deadline(Clock::now()), hangs(hangs) {
 	std::signal(SIGPIPE, SIG_IGN); // a subject that is gone is an error on write, not a signal
 	int requests[2], answers[2], filter_pipe[2] = {-1, -1};
 	if (pipe2(requests, O_CLOEXEC) != 0 || pipe2(answers, O_CLOEXEC) != 0) {
@@ -164,6 +163,11 @@ Subject::Subject(const std::string& program, const Sandbox& sandbox, Clock::time
 	from_subject = answers[0];
 	fcntl(to_subject, F_SETFL, O_NONBLOCK);
 	fcntl(from_subject, F_SETFL, O_NONBLOCK);
+}
+
+void Subject::begin(Clock::time_point deadline_, const std::string& save_requests_) {
+	deadline = deadline_;
+	save_requests = save_requests_;
 }
 
 Subject::~Subject() {

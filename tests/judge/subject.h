@@ -37,11 +37,13 @@ class Subject {
 public:
 	using Clock = std::chrono::steady_clock;
 
-	// Starts `program` in `sandbox`; `deadline`: when the test case's time is up. `hangs`: the
-	// judge's record of the requests that ran out of time, consulted and kept up to date.
-	// `save_requests`: a file to append every request to, for `subject --replay` (empty: none).
-	Subject(const std::string& program, const Sandbox& sandbox, Clock::time_point deadline, Hang_Record& hangs,
-	        const std::string& save_requests = "");
+	// Starts `program` in `sandbox` (the process starts at once; it is asked nothing before
+	// begin()). `hangs`: the judge's record of the requests that ran out of time, consulted and kept
+	// up to date.
+	Subject(const std::string& program, const Sandbox& sandbox, Hang_Record& hangs);
+	// Gives the subject to a test case: `deadline`, when the test case's time is up;
+	// `save_requests`, a file to append every request to, for `subject --replay` (empty: none).
+	void begin(Clock::time_point deadline, const std::string& save_requests);
 	~Subject();
 	Subject(const Subject&) = delete;
 	Subject& operator=(const Subject&) = delete;
