@@ -139,6 +139,7 @@ int main(int argc, char** argv) {
 	// Not dumpable: a subject running as the same user (process limits, no Landlock) can neither
 	// trace the judge nor read or write its memory through /proc.
 	prctl(PR_SET_DUMPABLE, 0, 0, 0, 0);
+	wire::keep_large_buffers();
 	Catch::Session session;
 	session.configData().reporterName = "lab";
 	Judge_State& s = state();

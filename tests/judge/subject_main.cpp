@@ -404,6 +404,7 @@ int replay(const char* file) {
 } // namespace
 
 int main(int argc, char** argv) {
+	wire::keep_large_buffers();
 	if (argc == 3 && std::string(argv[1]) == "--replay") return replay(argv[2]);
 	if (argc != 1) {
 		std::fprintf(stderr, "usage: %s            (started by a judge, see tests/judge/protocol.h)\n"

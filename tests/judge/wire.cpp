@@ -3,7 +3,14 @@
 #include <algorithm>
 #include <cstring>
 
+#include <malloc.h>
+
 namespace wire {
+
+void keep_large_buffers() {
+	mallopt(M_MMAP_THRESHOLD, 256 << 20);
+	mallopt(M_TRIM_THRESHOLD, 512 << 20);
+}
 
 namespace {
 
