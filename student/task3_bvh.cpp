@@ -44,10 +44,18 @@ template<typename Primitive> Trace BVH<Primitive>::hit(const Ray& ray) const {
 	// found so far (shrink a copy of the ray's dist_bounds.y to that hit). An explicit stack of
 	// (node, entry t) is faster than recursion.
 	//
-	// This starter version tests every primitive.
-	Trace ret;
-	for (const Primitive& prim : primitives) ret = Trace::min(ret, prim.hit(ray));
-	return ret;
+	// This starter version tests every primitive, each against the ray shortened to the closest
+	// hit so far (a primitive farther away is then a miss, found sooner); on a tie the first wins.
+	Ray closest_ray = ray;
+	Trace closest;
+	for (const Primitive& prim : primitives) {
+		Trace hit = prim.hit(closest_ray);
+		if (hit.hit && (!closest.hit || hit.distance < closest.distance)) {
+			closest = hit;
+			closest_ray.dist_bounds.y = hit.distance;
+		}
+	}
+	return closest;
 }
 
 // The framework builds BVHs of triangles (inside meshes) and of scene objects.
