@@ -34,6 +34,7 @@
 
 #include <cstdint>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace protocol {
@@ -45,31 +46,8 @@ constexpr int REQUEST_FD = 3, ANSWER_FD = 4;
 enum class Status : uint32_t { OK = 0, THREW = 1, QUESTION = 2 };
 constexpr uint64_t MAX_QUESTION = 1024; // bytes; a longer question is malformed
 
-enum class Kind : uint32_t {
-	generate_rays = 1,
-	trace_pixels,
-	render,
-	triangle_hits,
-	sphere_hits,
-	bbox_hits,
-	bvh_triangles,
-	bvh_instances,
-	bsdf_scatter,
-	bsdf_evaluate,
-	bsdf_pdf,
-	reflect,
-	refract,
-	fresnel,
-	sample_incoming,
-	direction_to_uv,
-	uv_to_direction,
-	uniform_sphere,
-	image_sampler,
-	env_map,
-	env_constant,
-	power_heuristic,
-	estimate_direct,
-};
+// A request's number on the wire: each request's KIND.
+enum class Kind : uint32_t {};
 const char* kind_name(Kind kind);
 // The student functions a request runs, in the handouts' words (for messages).
 const char* kind_functions(Kind kind);
@@ -81,7 +59,9 @@ using RNG_State = RNG::State;
 
 // Camera::generate_ray(film_uv) for each query.
 struct Generate_Rays {
-	static constexpr Kind KIND = Kind::generate_rays;
+	static constexpr Kind KIND{1};
+	static constexpr const char* NAME = "generate_rays";
+	static constexpr const char* FUNCTIONS = "Camera::generate_ray";
 	struct Query {
 		Camera camera;
 		Vec2 film_uv;
@@ -96,7 +76,9 @@ struct Generate_Rays {
 // Pathtracer(scene, settings, view).trace_pixel(x, y, rng) for each sample, each with its own
 // generator.
 struct Trace_Pixels {
-	static constexpr Kind KIND = Kind::trace_pixels;
+	static constexpr Kind KIND{2};
+	static constexpr const char* NAME = "trace_pixels";
+	static constexpr const char* FUNCTIONS = "Pathtracer::trace_pixel";
 	struct Sample {
 		uint32_t x = 0, y = 0;
 		RNG_State rng;
@@ -114,7 +96,9 @@ struct Trace_Pixels {
 // render(Pathtracer(scene, settings, view)) on `threads` threads: the whole film, every pixel's
 // samples drawn by the framework as `./lab render` draws them.
 struct Render {
-	static constexpr Kind KIND = Kind::render;
+	static constexpr Kind KIND{3};
+	static constexpr const char* NAME = "render";
+	static constexpr const char* FUNCTIONS = "a render of the scene with your code";
 	Scene scene;
 	Render_Settings settings;
 	View view = View::path;
@@ -128,7 +112,9 @@ struct Render {
 
 // Triangle::hit(ray) for each pair.
 struct Triangle_Hits {
-	static constexpr Kind KIND = Kind::triangle_hits;
+	static constexpr Kind KIND{4};
+	static constexpr const char* NAME = "triangle_hits";
+	static constexpr const char* FUNCTIONS = "Triangle::hit";
 	struct Query {
 		Triangle triangle;
 		Ray ray;
@@ -142,7 +128,9 @@ struct Triangle_Hits {
 
 // Sphere::hit(ray) for each pair.
 struct Sphere_Hits {
-	static constexpr Kind KIND = Kind::sphere_hits;
+	static constexpr Kind KIND{5};
+	static constexpr const char* NAME = "sphere_hits";
+	static constexpr const char* FUNCTIONS = "Sphere::hit";
 	struct Query {
 		Sphere sphere;
 		Ray ray;
@@ -158,7 +146,9 @@ struct Sphere_Hits {
 
 // BBox::hit(ray, times) for each query: whether it hit, and `times` as the call left it.
 struct BBox_Hits {
-	static constexpr Kind KIND = Kind::bbox_hits;
+	static constexpr Kind KIND{6};
+	static constexpr const char* NAME = "bbox_hits";
+	static constexpr const char* FUNCTIONS = "BBox::hit";
 	struct Query {
 		BBox box;
 		Ray ray;
@@ -190,7 +180,9 @@ struct Tree {
 
 // BVH<Triangle>(triangles, max_leaf_size), then bvh.hit(ray) for each ray.
 struct BVH_Triangles {
-	static constexpr Kind KIND = Kind::bvh_triangles;
+	static constexpr Kind KIND{7};
+	static constexpr const char* NAME = "bvh_triangles";
+	static constexpr const char* FUNCTIONS = "BVH::build and BVH::hit over triangles";
 	std::vector<Triangle> triangles;
 	uint64_t max_leaf_size = 1;
 	std::vector<Ray> rays;
@@ -210,7 +202,9 @@ struct BVH_Triangles {
 // subject knows only their boxes: boxes[i] is the world box of the object with Instance::index i.
 // Each Instance::hit asks the judge (an Object_Question, see the top), which counts them.
 struct BVH_Instances {
-	static constexpr Kind KIND = Kind::bvh_instances;
+	static constexpr Kind KIND{8};
+	static constexpr const char* NAME = "bvh_instances";
+	static constexpr const char* FUNCTIONS = "BVH::build and BVH::hit over scene objects";
 	std::vector<BBox> boxes;
 	uint64_t max_leaf_size = 1;
 	std::vector<Ray> rays;
@@ -238,7 +232,9 @@ struct Object_Question {
 
 // bsdf.scatter(rng, out_dir) for each direction, from one generator.
 struct BSDF_Scatter {
-	static constexpr Kind KIND = Kind::bsdf_scatter;
+	static constexpr Kind KIND{9};
+	static constexpr const char* NAME = "bsdf_scatter";
+	static constexpr const char* FUNCTIONS = "the BSDF's scatter";
 	BSDF bsdf;
 	std::vector<Vec3> out_dirs;
 	RNG_State rng;
@@ -254,7 +250,9 @@ struct Direction_Pair {
 
 // bsdf.evaluate(out_dir, in_dir) for each pair.
 struct BSDF_Evaluate {
-	static constexpr Kind KIND = Kind::bsdf_evaluate;
+	static constexpr Kind KIND{10};
+	static constexpr const char* NAME = "bsdf_evaluate";
+	static constexpr const char* FUNCTIONS = "the BSDF's evaluate";
 	BSDF bsdf;
 	std::vector<Direction_Pair> pairs;
 	template<class A> void fields(A& a) { a(bsdf, pairs); }
@@ -264,7 +262,9 @@ struct BSDF_Evaluate {
 
 // bsdf.pdf(out_dir, in_dir) for each pair.
 struct BSDF_Pdf {
-	static constexpr Kind KIND = Kind::bsdf_pdf;
+	static constexpr Kind KIND{11};
+	static constexpr const char* NAME = "bsdf_pdf";
+	static constexpr const char* FUNCTIONS = "the BSDF's pdf";
 	BSDF bsdf;
 	std::vector<Direction_Pair> pairs;
 	template<class A> void fields(A& a) { a(bsdf, pairs); }
@@ -274,7 +274,9 @@ struct BSDF_Pdf {
 
 // reflect(dir) for each direction.
 struct Reflect {
-	static constexpr Kind KIND = Kind::reflect;
+	static constexpr Kind KIND{12};
+	static constexpr const char* NAME = "reflect";
+	static constexpr const char* FUNCTIONS = "reflect";
 	std::vector<Vec3> dirs;
 	template<class A> void fields(A& a) { a(dirs); }
 	using Answer = std::vector<Vec3>;
@@ -283,7 +285,9 @@ struct Reflect {
 
 // refract(out_dir, index_of_refraction, was_internal) for each query.
 struct Refract {
-	static constexpr Kind KIND = Kind::refract;
+	static constexpr Kind KIND{13};
+	static constexpr const char* NAME = "refract";
+	static constexpr const char* FUNCTIONS = "refract";
 	struct Query {
 		Vec3 out_dir;
 		float index_of_refraction = 1.0f;
@@ -302,7 +306,9 @@ struct Refract {
 
 // fresnel(cos_theta, index_of_refraction) for each query.
 struct Fresnel {
-	static constexpr Kind KIND = Kind::fresnel;
+	static constexpr Kind KIND{14};
+	static constexpr const char* NAME = "fresnel";
+	static constexpr const char* FUNCTIONS = "fresnel";
 	struct Query {
 		float cos_theta = 1.0f, index_of_refraction = 1.0f;
 		template<class A> void fields(A& a) { a(cos_theta, index_of_refraction); }
@@ -318,7 +324,9 @@ struct Fresnel {
 // Pathtracer(scene, settings).sample_incoming(rng, hit, bsdf, out_dir) for each query, from one
 // generator.
 struct Sample_Incoming {
-	static constexpr Kind KIND = Kind::sample_incoming;
+	static constexpr Kind KIND{15};
+	static constexpr const char* NAME = "sample_incoming";
+	static constexpr const char* FUNCTIONS = "Pathtracer::sample_incoming";
 	struct Query {
 		Trace hit;
 		BSDF bsdf;
@@ -338,7 +346,9 @@ struct Sample_Incoming {
 
 // power_heuristic(pdf_f, pdf_g) for each pair (x: pdf_f, y: pdf_g).
 struct Power_Heuristic {
-	static constexpr Kind KIND = Kind::power_heuristic;
+	static constexpr Kind KIND{22};
+	static constexpr const char* NAME = "power_heuristic";
+	static constexpr const char* FUNCTIONS = "power_heuristic";
 	std::vector<Vec2> pairs;
 	template<class A> void fields(A& a) { a(pairs); }
 	using Answer = std::vector<float>;
@@ -348,7 +358,9 @@ struct Power_Heuristic {
 // Pathtracer(scene, settings).estimate_direct(rng, hit, bsdf, out_dir) for each query, from one
 // generator. (Renders by the NEE integrator are Trace_Pixels and Render with settings.integrator.)
 struct Estimate_Direct {
-	static constexpr Kind KIND = Kind::estimate_direct;
+	static constexpr Kind KIND{23};
+	static constexpr const char* NAME = "estimate_direct";
+	static constexpr const char* FUNCTIONS = "Pathtracer::estimate_direct";
 	Scene scene;
 	Render_Settings settings;
 	std::vector<Sample_Incoming::Query> queries;
@@ -362,7 +374,9 @@ struct Estimate_Direct {
 
 // direction_to_uv(dir) for each direction.
 struct Direction_To_UV {
-	static constexpr Kind KIND = Kind::direction_to_uv;
+	static constexpr Kind KIND{16};
+	static constexpr const char* NAME = "direction_to_uv";
+	static constexpr const char* FUNCTIONS = "direction_to_uv";
 	std::vector<Vec3> dirs;
 	template<class A> void fields(A& a) { a(dirs); }
 	using Answer = std::vector<Vec2>;
@@ -371,7 +385,9 @@ struct Direction_To_UV {
 
 // uv_to_direction(uv) for each point.
 struct UV_To_Direction {
-	static constexpr Kind KIND = Kind::uv_to_direction;
+	static constexpr Kind KIND{17};
+	static constexpr const char* NAME = "uv_to_direction";
+	static constexpr const char* FUNCTIONS = "uv_to_direction";
 	std::vector<Vec2> uvs;
 	template<class A> void fields(A& a) { a(uvs); }
 	using Answer = std::vector<Vec3>;
@@ -387,7 +403,9 @@ struct Sampler_Answer {
 
 // Samplers::Sphere::Uniform: sample(u) for each u and pdf(dir) for each dir.
 struct Uniform_Sphere {
-	static constexpr Kind KIND = Kind::uniform_sphere;
+	static constexpr Kind KIND{18};
+	static constexpr const char* NAME = "uniform_sphere";
+	static constexpr const char* FUNCTIONS = "Samplers::Sphere::Uniform";
 	std::vector<Vec2> us;
 	std::vector<Vec3> dirs;
 	template<class A> void fields(A& a) { a(us, dirs); }
@@ -397,7 +415,9 @@ struct Uniform_Sphere {
 
 // Samplers::Sphere::Image(image): its tables, then sample(u) for each u and pdf(dir) for each dir.
 struct Image_Sampler {
-	static constexpr Kind KIND = Kind::image_sampler;
+	static constexpr Kind KIND{19};
+	static constexpr const char* NAME = "image_sampler";
+	static constexpr const char* FUNCTIONS = "Samplers::Sphere::Image";
 	HDR_Image image;
 	std::vector<Vec2> us;
 	std::vector<Vec3> dirs;
@@ -416,7 +436,9 @@ struct Image_Sampler {
 // Env_Map(image, importance_sampling): sample(u) for each u, pdf(dir) and evaluate(dir) for each
 // dir.
 struct Env_Map_Queries {
-	static constexpr Kind KIND = Kind::env_map;
+	static constexpr Kind KIND{20};
+	static constexpr const char* NAME = "env_map";
+	static constexpr const char* FUNCTIONS = "Env_Map";
 	HDR_Image image;
 	bool importance_sampling = true;
 	std::vector<Vec2> us;
@@ -436,7 +458,9 @@ struct Env_Map_Queries {
 // Env_Constant{radiance} (framework, sampling with Samplers::Sphere::Uniform): sample(u) for each u,
 // pdf(dir) and evaluate(dir) for each dir.
 struct Env_Constant_Queries {
-	static constexpr Kind KIND = Kind::env_constant;
+	static constexpr Kind KIND{21};
+	static constexpr const char* NAME = "env_constant";
+	static constexpr const char* FUNCTIONS = "Env_Constant (with your Samplers::Sphere::Uniform)";
 	Spectrum radiance{1.0f};
 	std::vector<Vec2> us;
 	std::vector<Vec3> dirs;
@@ -447,5 +471,46 @@ struct Env_Constant_Queries {
 		       a.radiance.size() == dirs.size();
 	}
 };
+
+// ---- Every request, once ----
+// The judge asks them (judge.h); the subject answers each with answer(request), which each task's
+// tests/task<N>/subject_answers.h defines; kind_name, kind_functions and the subject's dispatch are
+// made from this list. A new request: its struct above and its answer, nothing else.
+using Requests = std::tuple<
+	Generate_Rays,
+	Trace_Pixels,
+	Render,
+	Triangle_Hits,
+	Sphere_Hits,
+	BBox_Hits,
+	BVH_Triangles,
+	BVH_Instances,
+	BSDF_Scatter,
+	BSDF_Evaluate,
+	BSDF_Pdf,
+	Reflect,
+	Refract,
+	Fresnel,
+	Sample_Incoming,
+	Power_Heuristic,
+	Estimate_Direct,
+	Direction_To_UV,
+	UV_To_Direction,
+	Uniform_Sphere,
+	Image_Sampler,
+	Env_Map_Queries,
+	Env_Constant_Queries>;
+
+// Each request's KIND is its own.
+template<class... Request> constexpr bool kinds_differ(std::tuple<Request...>*) {
+	const Kind kinds[] = {Request::KIND...};
+	for (size_t i = 0; i < sizeof...(Request); i++) {
+		for (size_t j = 0; j < i; j++) {
+			if (kinds[i] == kinds[j]) return false;
+		}
+	}
+	return true;
+}
+static_assert(kinds_differ(static_cast<Requests*>(nullptr)), "two requests share a KIND");
 
 } // namespace protocol
