@@ -5,9 +5,9 @@
 // (results_files.h) and DIR/points.csv (each task's points and the total, for a gradebook), and
 // prints the points.
 //
-// grade_report STUB_RESULTS --write-default-rubric FILE (./lab rubric) writes the default rubric for
-// the judges' test cases as the stubs' results list them; --update-rubric FILE (./lab rubric
-// --update) brings FILE up to date with them and prints what it added and dropped.
+// grade_report STUB_RESULTS --write-default-rubric FILE (the instructors' `rubric` in ./lab) writes the
+// default rubric for the judges' test cases as the stubs' results list them; --update-rubric FILE
+// (`rubric --update`) brings FILE up to date with them and prints what it added and dropped.
 #include "report_page.h"
 #include "results_files.h"
 #include "rubric.h"

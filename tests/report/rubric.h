@@ -9,7 +9,7 @@
 //
 // A test case is named by its id, the tag [id:ID] of the judge's TEST_CASE (cmake/test_case_ids.cmake),
 // which stays when its title is reworded; "title" is only a reminder for the reader (grading
-// ignores it, ./lab rubric --update refreshes it).
+// ignores it; `rubric --update`, an instructors' command of ./lab, refreshes it).
 // A test case is worth points * weight / (sum of its task's weights); it earns them when it passes.
 // Weight 0 marks a requirement: a test case that earns nothing by itself because a program doing
 // nothing passes it (the stubs' single-leaf BVH answers every ray right, "a scene without light
@@ -72,7 +72,7 @@ struct Task_Score {
 // results of grading the stubs). Instructors then edit weights and visibilities by hand.
 void write_default_rubric(std::ostream& out, const std::vector<Task_Result>& stubs);
 
-// A rubric brought up to date with the judges as they are (./lab rubric --update): each task keeps its
+// A rubric brought up to date with the judges as they are (`rubric --update` in ./lab): each task keeps its
 // points and each test case whose id a judge still has keeps its weight and every other field (its
 // title becomes the judge's); a test case new to the rubric gets weight 1; one that no judge has any
 // longer is dropped. A rubric from before the ids (test cases named by "name", their title) is

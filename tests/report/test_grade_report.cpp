@@ -1,6 +1,6 @@
 // The grade report's pieces (label report): what a task's status is, given the files ./lab report
-// leaves (task_result.h), how the rubric scores them by test-case id and how ./lab rubric --update
-// rewrites it (rubric.h), the HTML helpers, and the heat map's colour scale.
+// leaves (task_result.h), how the rubric scores them by test-case id and how it is rewritten by
+// `rubric --update` of ./lab (rubric.h), the HTML helpers, and the heat map's colour scale.
 #include "html.h"
 #include "rubric.h"
 #include "task_result.h"
