@@ -49,7 +49,7 @@ echo "autograder test: setup.sh ran in $((SECONDS - start)) s"
 # grade NAME EXPECTATION FILES...: one submission through run_autograder; EXPECTATION is full, zero
 # or less (than full marks).
 total=$(grep -o '"points": *[0-9.]*' "$root/grading/rubric.json" | grep -o '[0-9.]*$' | paste -sd+ | bc)
-cases=$(grep -c '"name":' "$root/grading/rubric.json")
+cases=$(grep -c '"id":' "$root/grading/rubric.json")
 grade() {
 	local name=$1 expectation=$2
 	shift 2

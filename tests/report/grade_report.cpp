@@ -4,6 +4,10 @@
 // scores each task and writes DIR/results.json (Gradescope's format), DIR/junit.xml
 // (results_files.h) and DIR/points.csv (each task's points and the total, for a gradebook), and
 // prints the points.
+//
+// grade_report STUB_RESULTS --write-default-rubric FILE (the instructors' `rubric` in ./lab) writes the
+// default rubric for the judges' test cases as the stubs' results list them; --update-rubric FILE
+// (`rubric --update`) brings FILE up to date with them and prints what it added and dropped.
 #include "report_page.h"
 #include "results_files.h"
 #include "rubric.h"
@@ -26,17 +30,19 @@ std::string now() {
 
 int main(int argc, char** argv) {
 	std::vector<std::string> args(argv + 1, argv + argc);
-	std::string rubric_file, default_rubric_file;
+	std::string rubric_file, default_rubric_file, rubric_to_update;
 	double execution_time = 0.0;
 	for (size_t i = 1; i + 1 < args.size(); i += 2) {
 		if (args[i] == "--rubric") rubric_file = args[i + 1];
 		else if (args[i] == "--execution-time") execution_time = std::stod(args[i + 1]);
 		else if (args[i] == "--write-default-rubric") default_rubric_file = args[i + 1];
+		else if (args[i] == "--update-rubric") rubric_to_update = args[i + 1];
 		else args.clear();
 	}
 	if (args.empty() || args.size() % 2 == 0) {
 		std::cerr << "usage: grade_report DIR [--rubric FILE [--execution-time SECONDS]]\n"
-		             "       grade_report STUB_RESULTS --write-default-rubric FILE   (./lab rubric)\n";
+		             "       grade_report STUB_RESULTS --write-default-rubric FILE   (./lab rubric)\n"
+		             "       grade_report STUB_RESULTS --update-rubric FILE          (./lab rubric --update)\n";
 		return 2;
 	}
 	std::filesystem::path dir = args[0];
@@ -52,6 +58,22 @@ int main(int argc, char** argv) {
 			return 1;
 		}
 		std::cout << default_rubric_file << "\n";
+		return 0;
+	}
+	if (!rubric_to_update.empty()) {
+		try {
+			Rubric_Update update = update_rubric(rubric_to_update, tasks);
+			std::ofstream out(rubric_to_update);
+			out << update.text;
+			if (!out.flush()) throw Rubric_Error("cannot write " + rubric_to_update);
+			for (const std::string& change : update.changes) std::cerr << "rubric: " << change << "\n";
+			if (update.changes.empty()) std::cerr << "rubric: no test case added or dropped\n";
+			Rubric::read(rubric_to_update); // still one that grading accepts (e.g. a task's points with no weight)
+		} catch (const Rubric_Error& problem) {
+			std::cerr << "grade_report: " << problem.what() << "\n";
+			return 1;
+		}
+		std::cout << rubric_to_update << "\n";
 		return 0;
 	}
 	std::vector<Task_Score> scores;

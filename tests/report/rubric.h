@@ -3,10 +3,13 @@
 // its test cases. Format:
 //
 //   {"tasks": [{"task": 1, "points": 5,
-//               "test_cases": [{"name": "<the judge's TEST_CASE name>", "weight": 2},
-//                              {"name": "...", "weight": 1, "visibility": "after_published"}, ...]},
+//               "test_cases": [{"id": "t1.ray.centre", "title": "generate_ray: the centre of ...", "weight": 2},
+//                              {"id": "...", "weight": 1, "visibility": "after_published"}, ...]},
 //              ...]}
 //
+// A test case is named by its id, the tag [id:ID] of the judge's TEST_CASE (cmake/test_case_ids.cmake),
+// which stays when its title is reworded; "title" is only a reminder for the reader (grading
+// ignores it; `rubric --update`, an instructors' command of ./lab, refreshes it).
 // A test case is worth points * weight / (sum of its task's weights); it earns them when it passes.
 // Weight 0 marks a requirement: a test case that earns nothing by itself because a program doing
 // nothing passes it (the stubs' single-leaf BVH answers every ray right, "a scene without light
@@ -14,11 +17,13 @@
 // of its task is worth on average). A task scores max(0, earned - penalties): the shipped stubs score
 // exactly 0, the reference full marks. "visibility" (Gradescope's words: visible, after_published,
 // after_due_date, hidden; default visible) says when students see the test case. Every test case of
-// every judge must be in the rubric, and nothing else.
+// every judge of tasks 1-7 must be in the rubric, and nothing else (checked when the build is
+// configured, and again when grading).
 #include "task_result.h"
 
 #include <filesystem>
 #include <map>
+#include <ostream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -29,7 +34,8 @@ struct Rubric_Error : std::runtime_error {
 
 struct Rubric {
 	struct Test_Case {
-		std::string name;
+		std::string id;
+		std::string title; // informational: what the test case was called when the rubric was written
 		double weight = 1.0;
 		double penalty = -1.0; // a requirement's cost when it fails; < 0: the default
 		std::string visibility = "visible";
@@ -48,7 +54,9 @@ struct Rubric {
 // One test case's score: max_score when it passed, 0 when it failed, or for a requirement 0 when it
 // passed and -penalty when it failed.
 struct Scored_Test_Case {
-	std::string name, visibility, output;
+	std::string id;
+	std::string name; // the judge's title of the test case (the rubric's title if the judge did not run)
+	std::string visibility, output;
 	double score = 0.0, max_score = 0.0;
 	bool passed = false;
 };
@@ -64,6 +72,20 @@ struct Task_Score {
 // results of grading the stubs). Instructors then edit weights and visibilities by hand.
 void write_default_rubric(std::ostream& out, const std::vector<Task_Result>& stubs);
 
-// A task's points from its result. Throws Rubric_Error if the judge has a test case the rubric does
-// not know or the rubric names one the judge does not have (a task that did not build has none).
+// A rubric brought up to date with the judges as they are (`rubric --update` in ./lab): each task keeps its
+// points and each test case whose id a judge still has keeps its weight and every other field (its
+// title becomes the judge's); a test case new to the rubric gets weight 1; one that no judge has any
+// longer is dropped. A rubric from before the ids (test cases named by "name", their title) is
+// converted: an entry takes the id of the test case of that title. `changes`: one line per test case
+// added or dropped. `stubs` as for write_default_rubric, whose results say which new test cases the
+// stubs pass (a hint: weight 0 would make them requirements).
+struct Rubric_Update {
+	std::string text; // the updated rubric, JSON
+	std::vector<std::string> changes;
+};
+Rubric_Update update_rubric(const std::filesystem::path& file, const std::vector<Task_Result>& stubs);
+
+// A task's points from its result, matched by id. Throws Rubric_Error if the judge has a test case
+// the rubric does not know, or one without an id, or the rubric names one the judge does not have (a
+// task that did not build has none).
 Task_Score score(const Rubric& rubric, const Task_Result& result);

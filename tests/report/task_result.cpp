@@ -94,8 +94,8 @@ Image_Test read_image_test(const fs::path& dir, const Json& record) {
 }
 
 Test_Case read_test_case(const fs::path& dir, const Json& record) {
-	Test_Case test_case{record.value("name", "?"), where(record), record.value("passed", false), {},
-	                    record.value("more_failures", size_t(0)), {}};
+	Test_Case test_case{record.value("id", ""), record.value("name", "?"), where(record), record.value("passed", false),
+	                    {}, record.value("more_failures", size_t(0)), {}};
 	for (const Json& failure : record.value("failures", Json::array())) {
 		test_case.failures.push_back(read_failure(failure));
 	}
@@ -160,6 +160,15 @@ void judge(Task_Result& result, int exit_status, const Json& record) {
 	}
 }
 
+// The judge's list of its test cases: {"id": ..., "name": ...} each.
+std::vector<Listed_Test_Case> read_listed_test_cases(const Json& list) {
+	std::vector<Listed_Test_Case> listed;
+	for (const Json& item : list) {
+		if (item.is_object()) listed.push_back({item.value("id", ""), item.value("name", "?")});
+	}
+	return listed;
+}
+
 Json read_record(const fs::path& file) {
 	std::ifstream in(file);
 	if (!in) return Json::object();
@@ -194,11 +203,11 @@ Task_Result read_task_result(const fs::path& dir, const Task_Info& task) {
 	}
 	result.sandbox = record.value("sandbox", "");
 	result.inputs = record.value("inputs", "");
-	result.expected = record.value("expected_test_cases", std::vector<std::string>{});
-	for (const std::string& name : result.expected) {
+	result.expected = read_listed_test_cases(record.value("expected_test_cases", Json::array()));
+	for (const Listed_Test_Case& listed : result.expected) {
 		bool ran = std::any_of(result.test_cases.begin(), result.test_cases.end(),
-		                       [&](const Test_Case& c) { return c.name == name; });
-		if (!ran) result.not_run.push_back(name);
+		                       [&](const Test_Case& c) { return c.name == listed.name; });
+		if (!ran) result.not_run.push_back(listed.name);
 	}
 	if (!record.contains("expected_test_cases")) result.not_run.push_back("(the judge recorded no list of test cases)");
 	result.log_file = name + ".log";

@@ -5,7 +5,8 @@
 //   task<N>.exit        the grader's exit status (absent: the grader did not build, or was not run)
 //   task<N>.log         the grader's output (stdout and stderr)
 //   task<N>.json        what the grader's judge recorded (tests/support/report_listener.cpp): the
-//                       judge's test cases, each one's result, how the student's code ran
+//                       judge's test cases (each with its id and title), each one's result, how the
+//                       student's code ran
 //   task<N>_*.png       the images of its reference-image test (tests/support/graded_images.cpp)
 #include <cstddef>
 #include <filesystem>
@@ -40,11 +41,17 @@ struct Image_Test {
 };
 
 struct Test_Case {
-	std::string name, where;
+	std::string id;          // the judge's tag [id:ID], which the rubric grades by; "" if it has none
+	std::string name, where; // name: the TEST_CASE's title
 	bool passed = false;
 	std::vector<Failure> failures;
 	size_t more_failures = 0; // failed checks beyond those recorded
 	std::vector<Image_Test> image_tests;
+};
+
+// A test case as the judge lists them all, whether it ran or not.
+struct Listed_Test_Case {
+	std::string id, name;
 };
 
 struct Task_Result {
@@ -57,8 +64,8 @@ struct Task_Result {
 	std::string log_tail; // its last lines, shown when the grader crashed or did not build
 	std::string sandbox;  // how the judge ran the student's code (tests/judge/sandbox.h)
 	std::string inputs;   // the public test cases, or drawn from a grading seed
-	std::vector<std::string> expected; // every test case of the judge, as it listed them
-	std::vector<std::string> not_run;  // those that have no result
+	std::vector<Listed_Test_Case> expected; // every test case of the judge, as it listed them
+	std::vector<std::string> not_run;       // the names of those that have no result
 
 	size_t passed_count() const;
 };

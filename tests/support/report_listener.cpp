@@ -1,6 +1,7 @@
 // The grade report's Catch2 listener (`./lab report`, tests/report/), in the judge (tests/judge/):
 // only the judge writes the report's records. When LAB_REPORT_DIR is set, a grader writes
-// <dir>/task<N>.json (report_record.h): per test case whether it passed and, for
+// <dir>/task<N>.json (report_record.h): per test case its id (its tag [id:ID], which the rubric
+// grades by), its title, whether it passed and, for
 // each failed check, where it is, what it checked and its messages (the INFO/CAPTURE text that
 // tells the student what is wrong and where to look), and what checks attached (the images of a
 // reference-image test). The file is rewritten after every test case, so a grader that crashes or
@@ -40,6 +41,15 @@ std::string result_kind(Catch::ResultWas::OfType type) {
 	}
 }
 
+// A test case's id: ID of its tag [id:ID] (cmake/test_case_ids.cmake), or "" if it has none.
+std::string test_case_id(const Catch::TestCaseInfo& info) {
+	const std::string prefix = "id:";
+	for (const std::string& tag : info.tags) {
+		if (tag.rfind(prefix, 0) == 0) return tag.substr(prefix.size());
+	}
+	return "";
+}
+
 // One failed check: where, what, and the messages that explain it.
 Json failure_record(const Catch::AssertionStats& stats) {
 	const Catch::AssertionResult& result = stats.assertionResult;
@@ -63,15 +73,15 @@ public:
 		grader = info.name;
 		// Every test case the judge has, whatever this run selected: a task passes only when each ran.
 		for (const Catch::TestCase& test_case : Catch::getAllTestCasesSorted(*m_config)) {
-			expected.push_back(test_case.name);
+			expected.push_back(Json{{"id", test_case_id(test_case)}, {"name", test_case.name}});
 		}
 		write(false);
 	}
 
 	void testCaseStarting(const Catch::TestCaseInfo& info) override {
 		TestEventListenerBase::testCaseStarting(info);
-		running = Json{{"name", info.name}, {"file", source_path(info.lineInfo.file)}, {"line", info.lineInfo.line},
-		               {"passed", false}, {"failures", Json::array()}, {"more_failures", 0}};
+		running = Json{{"id", test_case_id(info)}, {"name", info.name}, {"file", source_path(info.lineInfo.file)},
+		               {"line", info.lineInfo.line}, {"passed", false}, {"failures", Json::array()}, {"more_failures", 0}};
 		report::take_attachments(); // none belong to this test case yet
 		write(false);
 	}
@@ -122,7 +132,7 @@ private:
 	std::string grader;
 	Json running; // the test case in progress, null between test cases
 	Json test_cases = Json::array();
-	Json expected = Json::array(); // the names of all the judge's test cases
+	Json expected = Json::array(); // all the judge's test cases: {"id": ..., "name": ...}
 	Json fatal_error; // the signal's name if the grader crashed, else null
 };
 

@@ -85,7 +85,7 @@ float fov(RNG& rng, float public_fov) {
 
 } // namespace
 
-TEST_CASE("generate_ray: the centre of the film looks straight ahead, down -z in camera space", "[fn:generate_ray]") {
+TEST_CASE("generate_ray: the centre of the film looks straight ahead, down -z in camera space", "[id:t1.ray.centre][fn:generate_ray]") {
 	std::vector<Generate_Rays::Query> queries;
 	for (auto [fov, aspect] : fovs_and_aspects()) queries.push_back({camera_at_origin(fov, aspect), Vec2{0.5f, 0.5f}});
 	std::vector<Ray> rays = student_rays(queries);
@@ -102,7 +102,7 @@ TEST_CASE("generate_ray: the centre of the film looks straight ahead, down -z in
 	}
 }
 
-TEST_CASE("generate_ray: corners and edges of the film follow v_fov (degrees) and aspect_ratio", "[fn:generate_ray]") {
+TEST_CASE("generate_ray: corners and edges of the film follow v_fov (degrees) and aspect_ratio", "[id:t1.ray.corners][fn:generate_ray]") {
 	std::vector<Generate_Rays::Query> queries;
 	for (auto [fov, aspect] : fovs_and_aspects()) {
 		for (DVec2 uv : film_points()) queries.push_back({camera_at_origin(fov, aspect), Vec2(uv)});
@@ -110,7 +110,7 @@ TEST_CASE("generate_ray: corners and edges of the film follow v_fov (degrees) an
 	check_rays(queries);
 }
 
-TEST_CASE("generate_ray: the film spans exactly v_fov vertically and the aspect ratio horizontally", "[fn:generate_ray]") {
+TEST_CASE("generate_ray: the film spans exactly v_fov vertically and the aspect ratio horizontally", "[id:t1.ray.field-of-view][fn:generate_ray]") {
 	// A geometric restatement independent of any formula: the angle between the rays through the
 	// top and bottom edge midpoints is v_fov; between left and right it is 2 atan(aspect tan(v_fov/2)).
 	const Vec2 top{0.5f, 0.0f}, bottom{0.5f, 1.0f}, left{0.0f, 0.5f}, right{1.0f, 0.5f};
@@ -139,7 +139,7 @@ TEST_CASE("generate_ray: the film spans exactly v_fov vertically and the aspect 
 	}
 }
 
-TEST_CASE("generate_ray: film (0, 0) is up and to the left as seen by the camera", "[fn:generate_ray]") {
+TEST_CASE("generate_ray: film (0, 0) is up and to the left as seen by the camera", "[id:t1.ray.orientation][fn:generate_ray]") {
 	// A camera turned to look along a diagonal: "up" and "left" are the camera's, not the world's.
 	RNG rng = judge::case_generator("up and left");
 	Vec3 position = place(rng, {1.0f, 2.0f, 3.0f}, 5.0f), target = place(rng, {-2.0f, 0.5f, -1.0f}, 5.0f);
@@ -172,7 +172,7 @@ TEST_CASE("generate_ray: film (0, 0) is up and to the left as seen by the camera
 	}
 }
 
-TEST_CASE("generate_ray: directions are unit length and dist_bounds is [0, inf)", "[fn:generate_ray]") {
+TEST_CASE("generate_ray: directions are unit length and dist_bounds is [0, inf)", "[id:t1.ray.unit-and-bounds][fn:generate_ray]") {
 	RNG cases = judge::case_generator("unit length");
 	Camera camera = Camera::look_at(place(cases, Vec3{0.0f, 1.0f, 4.0f}, 5.0f), Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f},
 	                                fov(cases, 70.0f), 16.0f / 9.0f);
@@ -192,7 +192,7 @@ TEST_CASE("generate_ray: directions are unit length and dist_bounds is [0, inf)"
 	CHECK(wrong_bounds == 0);
 }
 
-TEST_CASE("generate_ray: camera_to_world moves the origin to the camera and rotates the directions", "[fn:generate_ray]") {
+TEST_CASE("generate_ray: camera_to_world moves the origin to the camera and rotates the directions", "[id:t1.ray.camera-to-world][fn:generate_ray]") {
 	RNG rng = judge::case_generator("camera_to_world");
 	SECTION("a camera made by look_at looks at its target") {
 		Vec3 position = place(rng, {3.0f, -2.0f, 5.0f}, 6.0f), target = place(rng, {0.0f, 1.0f, -1.0f}, 6.0f);

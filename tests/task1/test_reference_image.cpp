@@ -7,7 +7,7 @@
 #include <catch2/catch.hpp>
 
 TEST_CASE("the graded scene eye_bunny renders like its reference image",
-          "[estimate][task1][image][statistical][uses:generate_ray][uses:trace_pixel]") {
+          "[id:t1.image.eye-bunny][estimate][task1][image][statistical][uses:generate_ray][uses:trace_pixel]") {
 	Image_Test test;
 	test.name = "eye_bunny";
 	test.hint = "If the picture is shifted, flipped or stretched, look at generate_ray (handout §1.2); if edges are too "

@@ -164,7 +164,7 @@ std::string outside_problem(const Offsets& o, uint32_t x, uint32_t y, uint32_t n
 
 } // namespace
 
-TEST_CASE("trace_pixel: every sample of pixel (x, y) falls inside that pixel, in any corner of the film", "[fn:trace_pixel][uses:generate_ray]") {
+TEST_CASE("trace_pixel: every sample of pixel (x, y) falls inside that pixel, in any corner of the film", "[id:t1.pixel.inside][fn:trace_pixel][uses:generate_ray]") {
 	const std::vector<Pixel> pixels{{0, 0}, {WIDTH - 1, 0}, {0, HEIGHT - 1}, {WIDTH - 1, HEIGHT - 1}, {17, 29}, {40, 3}};
 	std::vector<std::vector<Sample>> samples = sample_pixels(direction_scene(), pixels, 2000);
 	for (size_t i = 0; i < pixels.size(); i++) {
@@ -176,7 +176,7 @@ TEST_CASE("trace_pixel: every sample of pixel (x, y) falls inside that pixel, in
 	}
 }
 
-TEST_CASE("trace_pixel: samples are uniform over the pixel around its centre (x + 0.5, y + 0.5)", "[estimate][fn:trace_pixel][uses:generate_ray]") {
+TEST_CASE("trace_pixel: samples are uniform over the pixel around its centre (x + 0.5, y + 0.5)", "[id:t1.pixel.uniform][estimate][fn:trace_pixel][uses:generate_ray]") {
 	// 10^5 samples per pixel in 8 x 8 cells (expected 1562.5 per cell): a chi-square test of
 	// uniformity, and z-tests that the mean offset is the pixel centre 0.5 (variance 1/12 per axis).
 	constexpr uint32_t N = 100000;

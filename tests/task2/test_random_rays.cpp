@@ -78,7 +78,7 @@ Triangle random_triangle(RNG& rng, float scale) {
 
 } // namespace
 
-TEST_CASE("Triangle::hit agrees with the reference on 10^5 random rays", "[fn:Triangle::hit]") {
+TEST_CASE("Triangle::hit agrees with the reference on 10^5 random rays", "[id:t2.triangle.random-rays][fn:Triangle::hit]") {
 	// Origins within 10 sizes of the triangle, aimed at points around it (half of them inside),
 	// |dir| from 0.01 to 100, coordinates at scales from 1e-3 to 1e3.
 	RNG rng(judge::secret_seed().value_or(1234));
@@ -120,7 +120,7 @@ TEST_CASE("Triangle::hit agrees with the reference on 10^5 random rays", "[fn:Tr
 	CHECK(tally.hits > RAYS / 5);
 }
 
-TEST_CASE("Sphere::hit agrees with the reference on 10^5 random rays", "[fn:Sphere::hit]") {
+TEST_CASE("Sphere::hit agrees with the reference on 10^5 random rays", "[id:t2.sphere.random-rays][fn:Sphere::hit]") {
 	// Radii from 0.01 to 100; origins from 0.2 r (inside) to 30 r away, aimed at points within
 	// 1.3 r of the centre (most hit, some pass by); |dir| from 0.01 to 100.
 	RNG rng(judge::secret_seed().value_or(5678));
@@ -153,7 +153,7 @@ TEST_CASE("Sphere::hit agrees with the reference on 10^5 random rays", "[fn:Sphe
 	CHECK(tally.hits > RAYS / 5);
 }
 
-TEST_CASE("Triangle::hit and Sphere::hit never return NaN, whatever finite input they get", "[fn:Triangle::hit][fn:Sphere::hit]") {
+TEST_CASE("Triangle::hit and Sphere::hit never return NaN, whatever finite input they get", "[id:t2.shapes.no-nan][fn:Triangle::hit][fn:Sphere::hit]") {
 	// Every coordinate and bound drawn with random sign and magnitude 10^-30 ... 10^30, some exactly
 	// 0; radii 0 or 10^-15 ... 10^15 (so that r^2 is still a normal float). Products overflow and
 	// underflow; the answer may be a hit or a miss, but a hit needs a finite distance inside

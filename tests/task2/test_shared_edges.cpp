@@ -55,7 +55,7 @@ std::string leak_message(size_t leaks, size_t rays, const std::string& example) 
 
 } // namespace
 
-TEST_CASE("Triangle::hit: a known leaking ray through the diagonal of a square hits one of its halves", "[fn:Triangle::hit]") {
+TEST_CASE("Triangle::hit: a known leaking ray through the diagonal of a square hits one of its halves", "[id:t2.triangle.diagonal-leak][fn:Triangle::hit]") {
 	// A square of side 10 split along its diagonal and a ray aimed exactly at the diagonal: in float,
 	// strict barycentric tests can give u = -2.8e-8 in one half and v = -9.2e-9 in the other.
 	Triangle a = flat_triangle(Vec3{-5.0f, -5.0f, 0.0f}, Vec3{5.0f, -5.0f, 0.0f}, Vec3{5.0f, 5.0f, 0.0f});
@@ -67,7 +67,7 @@ TEST_CASE("Triangle::hit: a known leaking ray through the diagonal of a square h
 	CHECK(hit);
 }
 
-TEST_CASE("Triangle::hit: rays through the shared edge of two triangles never leak (10^5 rays)", "[fn:Triangle::hit]") {
+TEST_CASE("Triangle::hit: rays through the shared edge of two triangles never leak (10^5 rays)", "[id:t2.triangle.shared-edge][fn:Triangle::hit]") {
 	// Random quads of size ~1 in random orientations, slightly folded, split along the diagonal
 	// p0-p2 and translated by 0 ... 10^4; rays from 2 units away aimed at float points 10-90 % along
 	// the diagonal, from all directions with |cos| >= 0.1 to both triangles' planes. Rays more

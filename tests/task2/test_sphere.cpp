@@ -74,7 +74,7 @@ const Vec3 DOWN{0.0f, 0.0f, -1.0f};
 
 } // namespace
 
-TEST_CASE("Sphere::hit: a ray from outside hits the near root, with the outward unit normal", "[fn:Sphere::hit]") {
+TEST_CASE("Sphere::hit: a ray from outside hits the near root, with the outward unit normal", "[id:t2.sphere.outside][fn:Sphere::hit]") {
 	Sphere_Checks checks;
 	checks.hit(R2, Ray(Vec3{0.0f, 0.0f, 10.0f}, DOWN), 8.0f, Vec3{0.0f, 0.0f, 1.0f}, "roots 8 and 12");
 	float t = 10.0f - std::sqrt(3.0f); // enters at (1, 0, sqrt 3)
@@ -85,7 +85,7 @@ TEST_CASE("Sphere::hit: a ray from outside hits the near root, with the outward 
 	checks.run();
 }
 
-TEST_CASE("Sphere::hit: t is in the ray's parameter, also for non-unit directions", "[fn:Sphere::hit]") {
+TEST_CASE("Sphere::hit: t is in the ray's parameter, also for non-unit directions", "[id:t2.sphere.ray-parameter][fn:Sphere::hit]") {
 	Sphere_Checks checks;
 	for (float scale : {0.5f, 0.25f, 3.0f, 4.0f, 1000.0f}) {
 		Ray ray(Vec3{0.0f, 0.0f, 10.0f}, scale * DOWN);
@@ -99,7 +99,7 @@ TEST_CASE("Sphere::hit: t is in the ray's parameter, also for non-unit direction
 	checks.run();
 }
 
-TEST_CASE("Sphere::hit: a ray starting inside the sphere hits the far root", "[fn:Sphere::hit]") {
+TEST_CASE("Sphere::hit: a ray starting inside the sphere hits the far root", "[id:t2.sphere.inside][fn:Sphere::hit]") {
 	Sphere_Checks checks;
 	checks.hit(R2, Ray(Vec3{0.0f, 0.0f, 0.5f}, Vec3{0.0f, 0.0f, 1.0f}), 1.5f, Vec3{0.0f, 0.0f, 1.0f},
 	          "the near root is -2.5, behind the origin");
@@ -108,7 +108,7 @@ TEST_CASE("Sphere::hit: a ray starting inside the sphere hits the far root", "[f
 	checks.run();
 }
 
-TEST_CASE("Sphere::hit: the far root counts when the near one is outside dist_bounds", "[fn:Sphere::hit]") {
+TEST_CASE("Sphere::hit: the far root counts when the near one is outside dist_bounds", "[id:t2.sphere.far-root][fn:Sphere::hit]") {
 	Sphere_Checks checks;
 	Ray ray(Vec3{0.0f, 0.0f, 10.0f}, DOWN); // roots 8 and 12
 	checks.hit(R2, bounded(ray, 9.0f, INF_F), 12.0f, Vec3{0.0f, 0.0f, -1.0f},
@@ -118,7 +118,7 @@ TEST_CASE("Sphere::hit: the far root counts when the near one is outside dist_bo
 	checks.run();
 }
 
-TEST_CASE("Sphere::hit: spheres behind the ray, and rays passing beside them, miss", "[fn:Sphere::hit]") {
+TEST_CASE("Sphere::hit: spheres behind the ray, and rays passing beside them, miss", "[id:t2.sphere.miss][fn:Sphere::hit]") {
 	Sphere_Checks checks;
 	checks.miss(R2, Ray(Vec3{0.0f, 0.0f, 10.0f}, Vec3{0.0f, 0.0f, 1.0f}), "both roots (-8 and -12) are negative");
 	checks.miss(R2, Ray(Vec3{2.5f, 0.0f, 10.0f}, DOWN), "the ray passes 2.5 from the centre of a sphere of radius 2");
@@ -126,7 +126,7 @@ TEST_CASE("Sphere::hit: spheres behind the ray, and rays passing beside them, mi
 	checks.run();
 }
 
-TEST_CASE("Sphere::hit: dist_bounds are inclusive at both ends, for both roots", "[fn:Sphere::hit]") {
+TEST_CASE("Sphere::hit: dist_bounds are inclusive at both ends, for both roots", "[id:t2.sphere.bounds-inclusive][fn:Sphere::hit]") {
 	Sphere_Checks checks;
 	// Roots exactly 8 and 12 (every formula computes them without rounding here).
 	Ray ray(Vec3{0.0f, 0.0f, 10.0f}, DOWN);
@@ -144,7 +144,7 @@ TEST_CASE("Sphere::hit: dist_bounds are inclusive at both ends, for both roots",
 	checks.run();
 }
 
-TEST_CASE("Sphere::hit: tangent and nearly tangent rays give no NaN", "[fn:Sphere::hit]") {
+TEST_CASE("Sphere::hit: tangent and nearly tangent rays give no NaN", "[id:t2.sphere.tangent][fn:Sphere::hit]") {
 	// Lines at distance r (1 +- 2^-k) from the centre: hit or miss may go either way within rounding,
 	// but a hit must be a proper one (shape_check.h: the tolerance grows at tangency with the spread
 	// of the reference's answers for rays moved by rounding).
@@ -176,7 +176,7 @@ TEST_CASE("Sphere::hit: tangent and nearly tangent rays give no NaN", "[fn:Spher
 	}
 }
 
-TEST_CASE("Sphere::hit: small and distant spheres are hit accurately (numerically stable quadratic)", "[fn:Sphere::hit]") {
+TEST_CASE("Sphere::hit: small and distant spheres are hit accurately (numerically stable quadratic)", "[id:t2.sphere.stable-quadratic][fn:Sphere::hit]") {
 	// A sphere of radius r seen from distance D, rays aimed within 0.9 r of the centre: all must hit,
 	// with t within 1e-5 (relative) of the reference's, which uses the stable form of handout §2.2
 	// and is within a few eps (< 1e-6) of the exact root; b^2 - ac cancels catastrophically when

@@ -71,7 +71,7 @@ bool check_miss(const Triangle& tri, const Ray& ray, const Trace& got, const cha
 
 } // namespace
 
-TEST_CASE("Triangle::hit: a ray through the interior hits at the analytic distance, position and normal", "[fn:Triangle::hit]") {
+TEST_CASE("Triangle::hit: a ray through the interior hits at the analytic distance, position and normal", "[id:t2.triangle.interior][fn:Triangle::hit]") {
 	// Straight down, and an oblique ray from (0.5, 0.25, 1) to (0.5, 0.5, -3), with dir = that
 	// difference (t = 1).
 	const Ray down(Vec3{0.0f}, Vec3{0.0f, 0.0f, -1.0f}), oblique(Vec3{0.5f, 0.25f, 1.0f}, Vec3{0.0f, 0.25f, -4.0f});
@@ -80,7 +80,7 @@ TEST_CASE("Triangle::hit: a ray through the interior hits at the analytic distan
 	check_hit(ABC, oblique, got[1], 1.0f, Vec3{0.5f, 0.5f, -3.0f}, Vec3{0.0f, 0.0f, 1.0f});
 }
 
-TEST_CASE("Triangle::hit: t is in the ray's parameter, also for non-unit directions", "[fn:Triangle::hit]") {
+TEST_CASE("Triangle::hit: t is in the ray's parameter, also for non-unit directions", "[id:t2.triangle.ray-parameter][fn:Triangle::hit]") {
 	const std::vector<float> scales{0.25f, 0.5f, 2.0f, 8.0f, 1000.0f};
 	std::vector<Query> queries;
 	for (float scale : scales) queries.push_back({ABC, Ray(Vec3{0.5f, 0.25f, 1.0f}, scale * Vec3{0.0f, 0.25f, -4.0f})});
@@ -92,13 +92,13 @@ TEST_CASE("Triangle::hit: t is in the ray's parameter, also for non-unit directi
 	}
 }
 
-TEST_CASE("Triangle::hit: both faces are hit, and the normal is not flipped towards the ray", "[fn:Triangle::hit]") {
+TEST_CASE("Triangle::hit: both faces are hit, and the normal is not flipped towards the ray", "[id:t2.triangle.both-faces][fn:Triangle::hit]") {
 	// From below the triangle (behind its face normal +z): still a hit, normal still +z (tri_mesh.h).
 	const Ray up(Vec3{0.0f, 0.0f, -6.0f}, Vec3{0.0f, 0.0f, 1.0f});
 	check_hit(ABC, up, student_hit(ABC, up), 3.0f, Vec3{0.0f, 0.0f, -3.0f}, Vec3{0.0f, 0.0f, 1.0f});
 }
 
-TEST_CASE("Triangle::hit: the normal interpolates the vertex normals with weights (1 - u - v, u, v)", "[fn:Triangle::hit]") {
+TEST_CASE("Triangle::hit: the normal interpolates the vertex normals with weights (1 - u - v, u, v)", "[id:t2.triangle.normal-interpolation][fn:Triangle::hit]") {
 	Vec3 n0{0.0f, 0.0f, 1.0f}, n1{1.0f, 0.0f, 0.0f}, n2{0.0f, 1.0f, 0.0f};
 	Triangle tri = triangle(ABC.v0.position, ABC.v1.position, ABC.v2.position, n0, n1, n2);
 	// u = 0.125, v = 0.5: weights 0.375 (v0), 0.125 (v1), 0.5 (v2), all different.
@@ -127,7 +127,7 @@ TEST_CASE("Triangle::hit: the normal interpolates the vertex normals with weight
 	CHECK(glm::length(got.normal - expected) <= 1e-5f);
 }
 
-TEST_CASE("Triangle::hit: rays just outside each edge miss, rays just inside hit", "[fn:Triangle::hit]") {
+TEST_CASE("Triangle::hit: rays just outside each edge miss, rays just inside hit", "[id:t2.triangle.edges][fn:Triangle::hit]") {
 	// 1e-3 in barycentric units (4e-3 in space here): far beyond rounding and any edge slack.
 	const float d = 1e-3f;
 	struct Case {
@@ -168,13 +168,13 @@ TEST_CASE("Triangle::hit: rays just outside each edge miss, rays just inside hit
 	}
 }
 
-TEST_CASE("Triangle::hit: triangles behind the ray's origin are missed", "[fn:Triangle::hit]") {
+TEST_CASE("Triangle::hit: triangles behind the ray's origin are missed", "[id:t2.triangle.behind][fn:Triangle::hit]") {
 	const Ray away(Vec3{0.0f, 0.0f, -5.0f}, Vec3{0.0f, 0.0f, -1.0f});
 	check_miss(ABC, away, student_hit(ABC, away),
 	           "the plane is at t = -2, behind the origin: dist_bounds starts at 0 (handout §2.3)");
 }
 
-TEST_CASE("Triangle::hit: dist_bounds are inclusive at both ends", "[fn:Triangle::hit]") {
+TEST_CASE("Triangle::hit: dist_bounds are inclusive at both ends", "[id:t2.triangle.bounds-inclusive][fn:Triangle::hit]") {
 	// t = 3 exactly (integer coordinates: any formula computes it without rounding).
 	Ray ray(Vec3{0.0f}, Vec3{0.0f, 0.0f, -1.0f});
 	const float t = 3.0f, below = t * (1.0f - 1e-6f), above = t * (1.0f + 1e-6f);
@@ -211,7 +211,7 @@ TEST_CASE("Triangle::hit: dist_bounds are inclusive at both ends", "[fn:Triangle
 	}
 }
 
-TEST_CASE("Triangle::hit: rays parallel to the triangle never hit and never give NaN", "[fn:Triangle::hit]") {
+TEST_CASE("Triangle::hit: rays parallel to the triangle never hit and never give NaN", "[id:t2.triangle.parallel][fn:Triangle::hit]") {
 	// A tilted triangle (plane x + y + z = 1) and a ray along its edge v0-v1, and the test triangle
 	// with rays in and parallel to its plane.
 	Triangle tilted = triangle(Vec3{1.0f, 0.0f, 0.0f}, Vec3{0.0f, 1.0f, 0.0f}, Vec3{0.0f, 0.0f, 1.0f});
@@ -232,7 +232,7 @@ TEST_CASE("Triangle::hit: rays parallel to the triangle never hit and never give
 	}
 }
 
-TEST_CASE("Triangle::hit: zero-area triangles never hit, even rays through their points", "[fn:Triangle::hit]") {
+TEST_CASE("Triangle::hit: zero-area triangles never hit, even rays through their points", "[id:t2.triangle.zero-area][fn:Triangle::hit]") {
 	struct Degenerate {
 		Vec3 p0, p1, p2;
 		const char* what;
@@ -269,7 +269,7 @@ TEST_CASE("Triangle::hit: zero-area triangles never hit, even rays through their
 	}
 }
 
-TEST_CASE("Triangle::hit: tiny triangles are hit (no fixed epsilon on det)", "[fn:Triangle::hit]") {
+TEST_CASE("Triangle::hit: tiny triangles are hit (no fixed epsilon on det)", "[id:t2.triangle.tiny][fn:Triangle::hit]") {
 	// det = d . (e1 x e2) scales with the square of the size: 1e-10 for edges of 1e-5.
 	const std::vector<float> sizes{1e-3f, 1e-5f, 1e-8f, 1e-12f};
 	std::vector<Query> queries;

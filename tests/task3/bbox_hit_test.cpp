@@ -75,7 +75,7 @@ void check(std::vector<Box_Case> cases) {
 
 } // namespace
 
-TEST_CASE("BBox::hit: rays that cross a box hit it and times becomes [enter, exit]", "[task3][bbox][fn:BBox::hit]") {
+TEST_CASE("BBox::hit: rays that cross a box hit it and times becomes [enter, exit]", "[id:t3.bbox.crossing][task3][bbox][fn:BBox::hit]") {
 	check({
 	         Box_Case{"a ray along +x through the middle enters at x = 0 and leaves at x = 1", UNIT,
 	                  Ray{{-1.0f, 0.5f, 0.5f}, {1.0f, 0.0f, 0.0f}}, from_zero(), true, {1.0f, 2.0f}},
@@ -92,7 +92,7 @@ TEST_CASE("BBox::hit: rays that cross a box hit it and times becomes [enter, exi
 	});
 }
 
-TEST_CASE("BBox::hit: rays that pass by or point away miss", "[task3][bbox][fn:BBox::hit]") {
+TEST_CASE("BBox::hit: rays that pass by or point away miss", "[id:t3.bbox.miss][task3][bbox][fn:BBox::hit]") {
 	check({
 	         Box_Case{"a ray parallel to x but above the box never enters the y slab", UNIT,
 	                  Ray{{-1.0f, 2.0f, 0.5f}, {1.0f, 0.0f, 0.0f}}, from_zero(), false, {}},
@@ -103,7 +103,7 @@ TEST_CASE("BBox::hit: rays that pass by or point away miss", "[task3][bbox][fn:B
 	});
 }
 
-TEST_CASE("BBox::hit: a ray starting inside the box hits it from times.x on", "[task3][bbox][fn:BBox::hit]") {
+TEST_CASE("BBox::hit: a ray starting inside the box hits it from times.x on", "[id:t3.bbox.inside][task3][bbox][fn:BBox::hit]") {
 	check({
 	         Box_Case{"the origin is inside: the overlap starts at times.x = 0 and ends at the exit", UNIT,
 	                  Ray{{0.5f, 0.5f, 0.5f}, {1.0f, 0.0f, 0.0f}}, from_zero(), true, {0.0f, 0.5f}},
@@ -112,7 +112,7 @@ TEST_CASE("BBox::hit: a ray starting inside the box hits it from times.x on", "[
 	});
 }
 
-TEST_CASE("BBox::hit: flat boxes (min == max on an axis) are hit", "[task3][bbox][fn:BBox::hit]") {
+TEST_CASE("BBox::hit: flat boxes (min == max on an axis) are hit", "[id:t3.bbox.flat][task3][bbox][fn:BBox::hit]") {
 	const BBox flat_z{{0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 0.0f}};
 	const BBox point{{1.0f, 2.0f, 3.0f}, {1.0f, 2.0f, 3.0f}};
 	check({
@@ -128,7 +128,7 @@ TEST_CASE("BBox::hit: flat boxes (min == max on an axis) are hit", "[task3][bbox
 }
 
 TEST_CASE("BBox::hit: axis-aligned rays and rays in the plane of a face (1/0 = inf, 0 * inf = NaN)",
-          "[task3][bbox][fn:BBox::hit]") {
+          "[id:t3.bbox.axis-aligned][task3][bbox][fn:BBox::hit]") {
 	check({
 	         Box_Case{"d = (0, 0, 1) from inside the x and y slabs: those slabs hold for every t", UNIT,
 	                  Ray{{0.5f, 0.5f, -1.0f}, {0.0f, 0.0f, 1.0f}}, from_zero(), true, {1.0f, 2.0f}},
@@ -151,7 +151,7 @@ TEST_CASE("BBox::hit: axis-aligned rays and rays in the plane of a face (1/0 = i
 	});
 }
 
-TEST_CASE("BBox::hit: times narrows to the overlap with the interval passed in", "[task3][bbox][fn:BBox::hit]") {
+TEST_CASE("BBox::hit: times narrows to the overlap with the interval passed in", "[id:t3.bbox.interval-overlap][task3][bbox][fn:BBox::hit]") {
 	const Ray ray{{-1.0f, 0.5f, 0.5f}, {1.0f, 0.0f, 0.0f}}; // inside the box for t in [1, 2]
 	check({
 	         Box_Case{"an interval that starts inside the box: the overlap starts there", UNIT, ray, {1.5f, 10.0f}, true,

@@ -164,7 +164,7 @@ Scene triangle_objects(const std::vector<Triangle>& triangles) {
 
 } // namespace
 
-TEST_CASE("BVH::build: SAH cost within 1.2x of a binned-SAH tree", "[task3][bvh][sah][fn:BVH::build]") {
+TEST_CASE("BVH::build: SAH cost within 1.2x of a binned-SAH tree", "[id:t3.bvh.sah-cost][task3][bvh][sah][fn:BVH::build]") {
 	RNG rng(scene_seed("SAH cost", 321));
 	check_sah_cost("clustered triangles with a few large ones", clustered_soup(rng)) &&
 		check_sah_cost("a random triangle soup", random_soup(rng, 4000, 0.05f)) &&
@@ -173,7 +173,7 @@ TEST_CASE("BVH::build: SAH cost within 1.2x of a binned-SAH tree", "[task3][bvh]
 }
 
 TEST_CASE("BVH::hit: objects tested per ray within 1.5x of an ideal front-to-back traversal",
-          "[task3][bvh][traversal][fn:BVH::hit][uses:BBox::hit][uses:BVH::build]") {
+          "[id:t3.bvh.traversal-cost][task3][bvh][traversal][fn:BVH::hit][uses:BBox::hit][uses:BVH::build]") {
 	RNG rng(scene_seed("traversal", 322));
 	Scene cloud = object_cloud(rng, 4000);
 	std::vector<Triangle> vertices_for_rays = random_soup(rng, 100, 0.06f);

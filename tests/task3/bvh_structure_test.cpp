@@ -50,7 +50,7 @@ bool check_structure(const std::vector<Triangle>& triangles, size_t max_leaf_siz
 } // namespace
 
 TEST_CASE("BVH::build: every primitive once, node ranges nested and tight boxes, small leaves",
-          "[task3][bvh][structure][fn:BVH::build]") {
+          "[id:t3.bvh.structure][task3][bvh][structure][fn:BVH::build]") {
 	RNG rng(scene_seed("structure", 311));
 	std::vector<Triangle> soup = random_soup(rng, 3000, 0.08f);
 	std::vector<Triangle> clusters = clustered_soup(rng);
@@ -59,7 +59,7 @@ TEST_CASE("BVH::build: every primitive once, node ranges nested and tight boxes,
 	}
 }
 
-TEST_CASE("BVH with no primitives: hit misses, bbox is empty", "[task3][bvh][degenerate][fn:BVH::build][fn:BVH::hit]") {
+TEST_CASE("BVH with no primitives: hit misses, bbox is empty", "[id:t3.bvh.empty][task3][bvh][degenerate][fn:BVH::build][fn:BVH::hit]") {
 	std::vector<Ray> rays{Ray{Vec3{0.0f}, Vec3{0.0f, 0.0f, 1.0f}}, Ray{Vec3{0.0f, 0.0f, -5.0f}, Vec3{0.0f, 0.0f, 1.0f}}};
 	BVH_Triangles::Answer answer = judge::ask(BVH_Triangles{{}, 4, rays});
 	INFO("BVH::build over zero primitives (handout §3.2): no crash, no node with a box, and hit() must miss");
@@ -69,7 +69,7 @@ TEST_CASE("BVH with no primitives: hit misses, bbox is empty", "[task3][bvh][deg
 	for (const Trace& hit : answer.hits) CHECK_FALSE(hit.hit);
 }
 
-TEST_CASE("BVH with one primitive: a leaf root, hits like the triangle itself", "[task3][bvh][degenerate][fn:BVH::build][fn:BVH::hit][uses:BBox::hit]") {
+TEST_CASE("BVH with one primitive: a leaf root, hits like the triangle itself", "[id:t3.bvh.one-primitive][task3][bvh][degenerate][fn:BVH::build][fn:BVH::hit][uses:BBox::hit]") {
 	RNG rng(scene_seed("one triangle", 312));
 	std::vector<Triangle> one{make_triangle(rng, {0.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f})};
 	const std::vector<Ray> rays{Ray{{0.25f, 0.25f, 1.0f}, {0.0f, 0.0f, -1.0f}}, Ray{{0.75f, 0.75f, 1.0f}, {0.0f, 0.0f, -1.0f}},
@@ -86,7 +86,7 @@ TEST_CASE("BVH with one primitive: a leaf root, hits like the triangle itself", 
 }
 
 TEST_CASE("BVH over identical triangles (all centroids coincide): the build ends, hits are right",
-          "[task3][bvh][degenerate][fn:BVH::build][fn:BVH::hit][uses:BBox::hit]") {
+          "[id:t3.bvh.identical-centroids][task3][bvh][degenerate][fn:BVH::build][fn:BVH::hit][uses:BBox::hit]") {
 	RNG rng(scene_seed("identical triangles", 313));
 	std::vector<Triangle> same(500, make_triangle(rng, {0.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.5f}, {0.0f, 1.0f, 1.0f}));
 	// Different triangles around one centroid: coincident centroids, but different boxes.
@@ -115,7 +115,7 @@ TEST_CASE("BVH over identical triangles (all centroids coincide): the build ends
 	}
 }
 
-TEST_CASE("BVH over a flat mesh (every box flat in z): structure and hits", "[task3][bvh][degenerate][fn:BVH::build][fn:BVH::hit][uses:BBox::hit]") {
+TEST_CASE("BVH over a flat mesh (every box flat in z): structure and hits", "[id:t3.bvh.flat-mesh][task3][bvh][degenerate][fn:BVH::build][fn:BVH::hit][uses:BBox::hit]") {
 	RNG rng(scene_seed("flat mesh", 314));
 	const int n = 24;
 	std::vector<Triangle> grid = planar_grid(rng, n);

@@ -9,7 +9,7 @@
 #include <catch2/catch.hpp>
 
 TEST_CASE("the graded scene eye_bunny renders through the BVH like its reference image",
-          "[task3][image][statistical][uses:BBox::hit][uses:BVH::build][uses:BVH::hit]") {
+          "[id:t3.image.eye-bunny][task3][image][statistical][uses:BBox::hit][uses:BVH::build][uses:BVH::hit]") {
 	Image_Test test;
 	test.name = "eye_bunny";
 	test.hint = "Missing or wrong surfaces: the traversal skipped a node it must visit, or kept a farther hit (handout "
@@ -24,7 +24,7 @@ TEST_CASE("the graded scene eye_bunny renders through the BVH like its reference
 	check_renders_like_reference(test);
 }
 
-TEST_CASE("the bunny of the graded scene gets a BVH of more than one node", "[task3][image][fn:BVH::build]") {
+TEST_CASE("the bunny of the graded scene gets a BVH of more than one node", "[id:t3.image.bvh-split][task3][image][fn:BVH::build]") {
 	Scene scene = load_graded(graded_scene("eye_bunny"));
 	const Tri_Mesh* bunny = nullptr;
 	for (const Instance& object : scene.bvh.primitives) {

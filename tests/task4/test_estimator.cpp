@@ -61,7 +61,7 @@ bool check_noise(const Furnace_Render& render, const std::string& what) {
 
 } // namespace
 
-TEST_CASE("Furnace: a white diffuse sphere in a uniform environment renders the environment, 1, everywhere", "[estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
+TEST_CASE("Furnace: a white diffuse sphere in a uniform environment renders the environment, 1, everywhere", "[id:t4.furnace.white][estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
 	// Albedo 1 and L_env = 1: whatever the path, light is neither created nor lost (anchors §4). A
 	// convex object never sees itself, so this holds for every max_depth >= 1.
 	std::optional<RNG> secret = secret_inputs("white furnace");
@@ -89,7 +89,7 @@ TEST_CASE("Furnace: a white diffuse sphere in a uniform environment renders the 
 }
 
 TEST_CASE("Furnace: a diffuse sphere of albedo rho under a uniform sky L renders rho * L for max_depth >= 1, "
-          "and black for max_depth 0", "[estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
+          "and black for max_depth 0", "[id:t4.furnace.albedo-under-sky][estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
 	// The sphere is convex: the first bounce sees only the sky, so its radiance is
 	// integral (rho / pi) L cos = rho * L whatever max_depth >= 1. With max_depth = 0 a camera ray
 	// may not scatter (pathtracer.h): the non-emitting sphere is black, the sky still L.
@@ -124,7 +124,7 @@ TEST_CASE("Furnace: a diffuse sphere of albedo rho under a uniform sky L renders
 	}
 }
 
-TEST_CASE("Furnace: inside an emitting diffuse sphere, max_depth D gives Le * (1 + rho + ... + rho^D)", "[estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
+TEST_CASE("Furnace: inside an emitting diffuse sphere, max_depth D gives Le * (1 + rho + ... + rho^D)", "[id:t4.furnace.emitting-inside][estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
 	// Every ray inside a closed sphere hits it again. Each hit emits Le and reflects rho of what
 	// arrives, so a path with at most D bounces carries Le * sum_{k=0..D} rho^k (anchors §4). An
 	// off-by-one in the depth test shifts the answer by a whole term, e.g. D = 1 gives
@@ -163,7 +163,7 @@ TEST_CASE("Furnace: inside an emitting diffuse sphere, max_depth D gives Le * (1
 	}
 }
 
-TEST_CASE("Furnace: a scene without emitters or environment renders exactly 0", "[fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
+TEST_CASE("Furnace: a scene without emitters or environment renders exactly 0", "[id:t4.furnace.no-light][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
 	// No light anywhere: every path carries 0, whatever the BSDF does.
 	std::optional<RNG> secret = secret_inputs("black scene");
 	Spectrum albedo{0.9f};
@@ -192,7 +192,7 @@ TEST_CASE("Furnace: a scene without emitters or environment renders exactly 0", 
 	}
 }
 
-TEST_CASE("Furnace far from the origin: new rays must leave their surface at any scale (dist_bounds offset)", "[estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
+TEST_CASE("Furnace far from the origin: new rays must leave their surface at any scale (dist_bounds offset)", "[id:t4.furnace.far-from-origin][estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
 	// The same diffuse sphere as above, moved to 10^4 from the origin. Float coordinates there are
 	// 10^-3 apart, so a hit point may lie that far inside the sphere: a new ray whose dist_bounds
 	// start at a fixed small distance (1e-4, say) hits its own surface again, an extra "bounce"

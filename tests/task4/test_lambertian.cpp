@@ -79,7 +79,7 @@ BSDF lambertian(Spectrum albedo) {
 
 } // namespace
 
-TEST_CASE("Lambertian evaluate: albedo / pi, without the cosine, on out_dir's side; 0 across the surface", "[fn:Lambertian::evaluate]") {
+TEST_CASE("Lambertian evaluate: albedo / pi, without the cosine, on out_dir's side; 0 across the surface", "[id:t4.lambertian.evaluate][fn:Lambertian::evaluate]") {
 	const Inputs in = inputs("Lambertian evaluate");
 	const BSDF_Lambertian reference{in.albedo};
 	BSDF_Evaluate request{lambertian(in.albedo), {}};
@@ -106,7 +106,7 @@ TEST_CASE("Lambertian evaluate: albedo / pi, without the cosine, on out_dir's si
 	}
 }
 
-TEST_CASE("Lambertian pdf: |cos theta_in| / pi on out_dir's side, 0 across, and it integrates to 1", "[fn:Lambertian::pdf]") {
+TEST_CASE("Lambertian pdf: |cos theta_in| / pi on out_dir's side, 0 across, and it integrates to 1", "[id:t4.lambertian.pdf][fn:Lambertian::pdf]") {
 	const Inputs in = inputs("Lambertian pdf");
 	const BSDF_Lambertian reference{in.albedo};
 	// Midpoint rule over cells equal in (cos theta, phi); it is exact for a density linear in
@@ -151,7 +151,7 @@ TEST_CASE("Lambertian pdf: |cos theta_in| / pi on out_dir's side, 0 across, and 
 	}
 }
 
-TEST_CASE("Lambertian scatter: unit in_dir on out_dir's side, attenuation = evaluate, f |cos| / pdf = albedo", "[fn:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
+TEST_CASE("Lambertian scatter: unit in_dir on out_dir's side, attenuation = evaluate, f |cos| / pdf = albedo", "[id:t4.lambertian.scatter][fn:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
 	const Inputs in = inputs("Lambertian scatter");
 	const Spectrum albedo = in.albedo;
 	constexpr size_t SAMPLES = 10000; // per out_dir
@@ -212,7 +212,7 @@ TEST_CASE("Lambertian scatter: unit in_dir on out_dir's side, attenuation = eval
 	}
 }
 
-TEST_CASE("Lambertian scatter: directions follow the cosine density |cos theta| / pi (chi-square), on both sides", "[fn:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
+TEST_CASE("Lambertian scatter: directions follow the cosine density |cos theta| / pi (chi-square), on both sides", "[id:t4.lambertian.scatter-chi2][fn:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
 	// Cells of equal solid angle: n_cos slices of cos theta in [-1, 1] times n_phi slices of phi.
 	// The probability of cell [c0, c1] x [phi0, phi1] on out_dir's side is
 	// integral |c| / pi dc dphi = |c1^2 - c0^2| / 2 * (2 pi / n_phi) / pi = |c1^2 - c0^2| / n_phi; across

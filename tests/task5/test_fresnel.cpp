@@ -48,7 +48,7 @@ void add_drawn(std::vector<Reference>& table, RNG& rng, int count, double lo, do
 
 } // namespace
 
-TEST_CASE("fresnel from outside (vacuum into glass of index 1.5) matches the exact Fresnel equations", "[fn:fresnel]") {
+TEST_CASE("fresnel from outside (vacuum into glass of index 1.5) matches the exact Fresnel equations", "[id:t5.fresnel.outside][fn:fresnel]") {
 	std::optional<RNG> secret = secret_inputs("fresnel from outside");
 	std::vector<Reference> table{
 		{0.0, 0.040000}, {30.0, 0.041523}, {45.0, 0.050240}, {56.3099, 0.073964} /* Brewster: r_p = 0 */,
@@ -72,7 +72,7 @@ TEST_CASE("fresnel from outside (vacuum into glass of index 1.5) matches the exa
 }
 
 TEST_CASE("fresnel from inside (glass of index 1.5 into vacuum) matches the exact equations, and is 1 beyond "
-          "the critical angle 41.81 degrees", "[fn:fresnel]") {
+          "the critical angle 41.81 degrees", "[id:t5.fresnel.inside][fn:fresnel]") {
 	std::optional<RNG> secret = secret_inputs("fresnel from inside");
 	std::vector<Reference> table{
 		{0.0, 0.040000}, {10.0, 0.040083}, {20.0, 0.041729}, {30.0, 0.055190}, {33.69, 0.073964},
@@ -96,7 +96,7 @@ TEST_CASE("fresnel from inside (glass of index 1.5 into vacuum) matches the exac
 	}
 }
 
-TEST_CASE("fresnel is the same for a direction and its refracted partner (both sides agree)", "[fn:fresnel]") {
+TEST_CASE("fresnel is the same for a direction and its refracted partner (both sides agree)", "[id:t5.fresnel.both-sides][fn:fresnel]") {
 	// Reflectance is reciprocal: F(theta_i from outside) = F(theta_t from inside) when
 	// sin(theta_i) = n sin(theta_t) (the reference's refract gives theta_t). A version that ignores
 	// which side it is on fails this.
@@ -127,7 +127,7 @@ TEST_CASE("fresnel is the same for a direction and its refracted partner (both s
 	}
 }
 
-TEST_CASE("fresnel with index of refraction 1 is 0: there is no boundary to reflect from", "[fn:fresnel]") {
+TEST_CASE("fresnel with index of refraction 1 is 0: there is no boundary to reflect from", "[id:t5.fresnel.index-one][fn:fresnel]") {
 	std::optional<RNG> secret = secret_inputs("fresnel, index 1");
 	std::vector<double> thetas{0.0, 30.0, 60.0, 85.0};
 	if (secret) {

@@ -45,7 +45,7 @@ void check_noise(const Furnace_Render& render, const std::string& what) {
 
 } // namespace
 
-TEST_CASE("Glass furnace: a clear glass sphere in a uniform environment L = 1 renders 1 (energy is conserved)", "[estimate][uses:Glass::scatter]") {
+TEST_CASE("Glass furnace: a clear glass sphere in a uniform environment L = 1 renders 1 (energy is conserved)", "[id:t5.furnace.glass][estimate][uses:Glass::scatter]") {
 	// Every path through clear glass ends in the environment with weight 1, unless the depth cap
 	// stops it inside. Inside a sphere the internal angle equals the refracted one, so there is no
 	// total internal reflection and a path is still inside after D scattering events with
@@ -81,7 +81,7 @@ TEST_CASE("Glass furnace: a clear glass sphere in a uniform environment L = 1 re
 }
 
 TEST_CASE("Glass, seen from inside: the lab does not scale radiance by eta^2, so the view from inside a glass "
-          "sphere under L = 1 is 1, not 2.25", "[estimate][uses:Glass::scatter]") {
+          "sphere under L = 1 is 1, not 2.25", "[id:t5.furnace.glass-from-inside][estimate][uses:Glass::scatter]") {
 	// material.h: transmitted radiance is not multiplied by eta^2. A renderer that does (radiance
 	// "compresses" into the denser medium) would show 1.5^2 = 2.25 here, while the furnace above
 	// cannot tell (the factors cancel on the way in and out). The camera is 3 units from the centre
@@ -110,7 +110,7 @@ TEST_CASE("Glass, seen from inside: the lab does not scale radiance by eta^2, so
 	check_noise(render, "the view from inside a glass sphere");
 }
 
-TEST_CASE("Mirror furnace: a mirror sphere of reflectance R in a uniform environment L = 1 renders R", "[estimate][uses:Mirror::scatter]") {
+TEST_CASE("Mirror furnace: a mirror sphere of reflectance R in a uniform environment L = 1 renders R", "[id:t5.furnace.mirror][estimate][uses:Mirror::scatter]") {
 	// A convex mirror reflects every camera ray once, straight into the environment: R * L.
 	std::optional<RNG> secret = secret_inputs("mirror furnace");
 	Spectrum reflectance{0.9f, 0.5f, 0.2f};

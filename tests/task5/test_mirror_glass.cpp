@@ -62,7 +62,7 @@ std::string degrees(double theta) {
 
 } // namespace
 
-TEST_CASE("Mirror scatter: in_dir = reflect(out_dir) exactly, attenuation = reflectance, from both sides", "[fn:Mirror::scatter][uses:reflect]") {
+TEST_CASE("Mirror scatter: in_dir = reflect(out_dir) exactly, attenuation = reflectance, from both sides", "[id:t5.mirror.scatter][fn:Mirror::scatter][uses:reflect]") {
 	std::optional<RNG> secret = secret_inputs("mirror scatter");
 	const Spectrum reflectance = colours(secret).reflectance;
 	std::vector<Vec3> dirs{direction(0.0, 0.0), direction(40.0, 1.0), direction(88.0, 2.0), direction(30.0, 3.0, true)};
@@ -84,7 +84,7 @@ TEST_CASE("Mirror scatter: in_dir = reflect(out_dir) exactly, attenuation = refl
 	}
 }
 
-TEST_CASE("Glass scatter: reflects with probability F and refracts with 1 - F (binomial test at each angle)", "[fn:Glass::scatter][uses:fresnel][uses:refract][uses:reflect]") {
+TEST_CASE("Glass scatter: reflects with probability F and refracts with 1 - F (binomial test at each angle)", "[id:t5.glass.reflect-or-refract][fn:Glass::scatter][uses:fresnel][uses:refract][uses:reflect]") {
 	struct Angle {
 		double theta;
 		bool inside;
@@ -146,7 +146,7 @@ TEST_CASE("Glass scatter: reflects with probability F and refracts with 1 - F (b
 	}
 }
 
-TEST_CASE("Glass scatter: beyond the critical angle inside, every sample reflects", "[fn:Glass::scatter][uses:fresnel][uses:refract][uses:reflect]") {
+TEST_CASE("Glass scatter: beyond the critical angle inside, every sample reflects", "[id:t5.glass.total-reflection][fn:Glass::scatter][uses:fresnel][uses:refract][uses:reflect]") {
 	std::optional<RNG> secret = secret_inputs("glass total internal reflection");
 	const Colours c = colours(secret);
 	float ior = 1.5f;
@@ -178,7 +178,7 @@ TEST_CASE("Glass scatter: beyond the critical angle inside, every sample reflect
 	}
 }
 
-TEST_CASE("Glass with index of refraction 1 is invisible: every sample continues straight, in_dir = -out_dir", "[fn:Glass::scatter][uses:fresnel][uses:refract]") {
+TEST_CASE("Glass with index of refraction 1 is invisible: every sample continues straight, in_dir = -out_dir", "[id:t5.glass.index-one][fn:Glass::scatter][uses:fresnel][uses:refract]") {
 	// F = 0 at every angle, so a correct glass never reflects (one float rounding could make F ~1e-16,
 	// which reflects with probability 2^-24 per sample: not in these 1500 samples, whose generator
 	// keeps its public seed under a grading seed too; only the directions and colours are drawn).

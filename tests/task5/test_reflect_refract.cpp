@@ -35,7 +35,7 @@ Refraction reference_refract(Vec3 out, float ior) {
 
 } // namespace
 
-TEST_CASE("reflect mirrors a direction about the normal (0, 1, 0): (x, y, z) -> (-x, y, -z), exactly", "[fn:reflect]") {
+TEST_CASE("reflect mirrors a direction about the normal (0, 1, 0): (x, y, z) -> (-x, y, -z), exactly", "[id:t5.reflect.mirror][fn:reflect]") {
 	std::optional<RNG> secret = secret_inputs("reflect");
 	std::vector<Vec3> dirs{Vec3{0.0f, 1.0f, 0.0f}, direction(30.0, 0.4), direction(75.0, 2.0), direction(89.0, -1.0),
 	                       direction(50.0, 3.0, true), Vec3{0.6f, 0.0f, 0.8f}};
@@ -54,7 +54,7 @@ TEST_CASE("reflect mirrors a direction about the normal (0, 1, 0): (x, y, z) -> 
 	}
 }
 
-TEST_CASE("refract obeys Snell's law from both sides: n_out sin(theta_out) = n_in sin(theta_in), to 1e-5", "[fn:refract]") {
+TEST_CASE("refract obeys Snell's law from both sides: n_out sin(theta_out) = n_in sin(theta_in), to 1e-5", "[id:t5.refract.snell][fn:refract]") {
 	// From outside every angle refracts; from inside, angles below the critical angle
 	// (asin(1 / 1.5) = 41.81 degrees for the public index) do.
 	std::optional<RNG> secret = secret_inputs("refract, Snell");
@@ -113,7 +113,7 @@ TEST_CASE("refract obeys Snell's law from both sides: n_out sin(theta_out) = n_i
 	CHECK(checked == 82);
 }
 
-TEST_CASE("refract: beyond the critical angle 41.81 degrees inside glass, total internal reflection", "[fn:refract]") {
+TEST_CASE("refract: beyond the critical angle 41.81 degrees inside glass, total internal reflection", "[id:t5.refract.total-reflection][fn:refract]") {
 	std::optional<RNG> secret = secret_inputs("refract, total internal reflection");
 	std::vector<double> thetas{41.9, 45.0, 60.0, 80.0, 89.9};
 	double phi = 1.1;
@@ -146,7 +146,7 @@ TEST_CASE("refract: beyond the critical angle 41.81 degrees inside glass, total 
 	CHECK_FALSE(answers[thetas.size() + 1].was_internal);
 }
 
-TEST_CASE("refract with index of refraction 1 passes straight through: in_dir = -out_dir", "[fn:refract]") {
+TEST_CASE("refract with index of refraction 1 passes straight through: in_dir = -out_dir", "[id:t5.refract.index-one][fn:refract]") {
 	std::optional<RNG> secret = secret_inputs("refract, index 1");
 	std::vector<Vec3> dirs{direction(0.0, 0.0), direction(35.0, 1.0), direction(80.0, 2.5), direction(60.0, 4.0, true)};
 	if (secret) {

@@ -126,7 +126,7 @@ Render_Settings one_pixel(uint64_t seed) {
 } // namespace
 
 TEST_CASE("BSDF sampling, light sampling and the mixture all estimate the light Lambert's formula gives",
-          "[estimate][task6][uses:sample_incoming]") {
+          "[id:t6.lighting.lambert][estimate][task6][uses:sample_incoming]") {
 	// A tilted, off-centre receiver under a square light (public: half-side 0.5, height 1, radiance
 	// 1): L_o = rho E / pi, E from Lambert's formula for polygons.
 	Lit_Point lit = lit_point("three strategies");
@@ -150,7 +150,7 @@ TEST_CASE("BSDF sampling, light sampling and the mixture all estimate the light 
 	               ": a biased mean means the pdf does not match how the direction was drawn (handout §6.2)");
 }
 
-TEST_CASE("the mixture estimates the light from a sphere: E = pi L (r/d)^2 cos(beta)", "[estimate][task6][uses:sample_incoming]") {
+TEST_CASE("the mixture estimates the light from a sphere: E = pi L (r/d)^2 cos(beta)", "[id:t6.lighting.sphere-light][estimate][task6][uses:sample_incoming]") {
 	// A sphere light of radius 0.5 at distance 2 along a direction 30 degrees from the normal. With a
 	// grading seed: radius 0.3 to 0.6, distance 1.5 to 3, 0 to 55 degrees from the normal, so that
 	// the whole sphere stays above the horizon (beta + asin(r / d) < 79 degrees).
@@ -173,7 +173,7 @@ TEST_CASE("the mixture estimates the light from a sphere: E = pi L (r/d)^2 cos(b
 	               expected, "sample_incoming's mixture under a sphere light (handout §6.2)");
 }
 
-TEST_CASE("under a small light, the mixture has a lower variance than BSDF sampling alone", "[task6][uses:sample_incoming]") {
+TEST_CASE("under a small light, the mixture has a lower variance than BSDF sampling alone", "[id:t6.lighting.lower-variance][task6][uses:sample_incoming]") {
 	// Square of half-side 0.1 at height 1: BSDF sampling finds it 1.3% of the time, light sampling
 	// every time. One-sided z-test of var(BSDF) - var(mixture) > 0, with the sampling variance of
 	// a sample variance, (m4 - s^4) / n.
@@ -194,7 +194,7 @@ TEST_CASE("under a small light, the mixture has a lower variance than BSDF sampl
 	CHECK(z > critical);
 }
 
-TEST_CASE("a diffuse floor under a square light renders as rho E / pi (max_depth 1)", "[estimate][task6][uses:sample_incoming]") {
+TEST_CASE("a diffuse floor under a square light renders as rho E / pi (max_depth 1)", "[id:t6.lighting.floor][estimate][task6][uses:sample_incoming]") {
 	// Lambert's formula for a parallel square of half-side a at height h, under its centre:
 	// a/h = 0.5 -> E = 0.752275 L, a/h = 1 -> E = 1.740840 L (light_closed_forms.h). With a grading
 	// seed, two squares of half-side 0.3 to 1.2 at height 0.7 to 1.5, of radiance 0.5 to 3.
@@ -224,7 +224,7 @@ TEST_CASE("a diffuse floor under a square light renders as rho E / pi (max_depth
 	}
 }
 
-TEST_CASE("a light hidden behind a blocker gives exactly 0", "[task6][uses:sample_incoming]") {
+TEST_CASE("a light hidden behind a blocker gives exactly 0", "[id:t6.lighting.blocked][task6][uses:sample_incoming]") {
 	// A black square between the floor and the light covers the light as seen from the floor's
 	// centre; the camera looks at that centre from the side, under the blocker. No direction can
 	// bring light, so every sample is exactly 0, never NaN.

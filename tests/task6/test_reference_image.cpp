@@ -8,7 +8,7 @@
 #include <catch2/catch.hpp>
 
 TEST_CASE("the graded scene cornell_small_light renders like its reference image",
-          "[estimate][task6][image][statistical][uses:sample_incoming]") {
+          "[id:t6.image.cornell-small-light][estimate][task6][image][statistical][uses:sample_incoming]") {
 	Image_Test test;
 	test.name = "cornell_small_light";
 	test.hint = "The mixture's pdf must be 1/2 p_bsdf + 1/2 p_lights for EVERY direction, whichever strategy drew it "

@@ -82,7 +82,7 @@ First_Problem check_mixture_samples(const Pathtracer& pt, const Lit_Point& lit,
 } // namespace
 
 TEST_CASE("sample_incoming returns the mixture's density 0.5 bsdf.pdf + 0.5 area_lights_pdf of its direction",
-          "[task6][fn:sample_incoming]") {
+          "[id:t6.mixture.density][task6][fn:sample_incoming]") {
 	Lit_Point lit = lit_point("mixture density");
 	SECTION("a square light") {
 		Scene scene = ceiling_light_scene(lit.half_side, lit.height);
@@ -105,7 +105,7 @@ TEST_CASE("sample_incoming returns the mixture's density 0.5 bsdf.pdf + 0.5 area
 	}
 }
 
-TEST_CASE("sample_incoming chooses BSDF or light sampling with a fair coin", "[task6][fn:sample_incoming]") {
+TEST_CASE("sample_incoming chooses BSDF or light sampling with a fair coin", "[id:t6.mixture.fair-coin][task6][fn:sample_incoming]") {
 	// Light sampling always aims at the light; cosine-weighted BSDF sampling hits it with
 	// probability E / (pi L) (the irradiance of a light of radiance 1, over pi). So a fair coin sends
 	// a fraction 1/2 + 1/2 * E / pi of the directions towards the light.
@@ -129,7 +129,7 @@ TEST_CASE("sample_incoming chooses BSDF or light sampling with a fair coin", "[t
 	CHECK(std::abs(z) <= task6::z_critical());
 }
 
-TEST_CASE("discrete BSDFs are sampled as they are, without light sampling", "[task6][fn:sample_incoming]") {
+TEST_CASE("discrete BSDFs are sampled as they are, without light sampling", "[id:t6.mixture.discrete-bsdf][task6][fn:sample_incoming]") {
 	Lit_Point lit = lit_point("discrete BSDFs");
 	Scene scene = ceiling_light_scene(lit.half_side, lit.height);
 	Trace hit = surface_point(lit.position, lit.normal);
@@ -173,7 +173,7 @@ TEST_CASE("discrete BSDFs are sampled as they are, without light sampling", "[ta
 	}
 }
 
-TEST_CASE("without lights, sample_incoming is plain BSDF sampling", "[task6][fn:sample_incoming]") {
+TEST_CASE("without lights, sample_incoming is plain BSDF sampling", "[id:t6.mixture.no-lights][task6][fn:sample_incoming]") {
 	// A grey sphere and nothing that emits: has_lights() is false, and sample_area_lights would throw.
 	Scene scene;
 	add_object(scene, Sphere{1.0f}, add_material(scene, diffuse_material(Spectrum{0.5f}), "grey"));
@@ -200,7 +200,7 @@ TEST_CASE("without lights, sample_incoming is plain BSDF sampling", "[task6][fn:
 	}
 }
 
-TEST_CASE("a direction no strategy can produce carries zero weight, never NaN", "[task6][fn:sample_incoming]") {
+TEST_CASE("a direction no strategy can produce carries zero weight, never NaN", "[id:t6.mixture.zero-weight][task6][fn:sample_incoming]") {
 	// A light lying in the receiver's own plane, seen exactly edge-on: its directions are on the
 	// horizon (BSDF density 0) and graze the light (light density 0), so the mixture density is 0.
 	// With a grading seed the light's place in the plane and out_dir are drawn.

@@ -160,7 +160,7 @@ Render_Settings one_pixel(uint64_t seed) {
 
 } // namespace
 
-TEST_CASE("estimate_direct gives exactly 0 when the shadow ray is blocked", "[task6_nee][fn:estimate_direct]") {
+TEST_CASE("estimate_direct gives exactly 0 when the shadow ray is blocked", "[id:t6nee.direct.blocked][task6_nee][fn:estimate_direct]") {
 	// A black square between the point and the light covers the light as seen from the point.
 	Scene scene = ceiling_light_scene(0.5f, 1.0f);
 	scene.objects = std::move(scene.bvh.primitives); // reopen the committed scene
@@ -176,7 +176,7 @@ TEST_CASE("estimate_direct gives exactly 0 when the shadow ray is blocked", "[ta
 	CHECK(nonzero == 0);
 }
 
-TEST_CASE("estimate_direct gives exactly 0 for a light behind the surface", "[task6_nee][fn:estimate_direct]") {
+TEST_CASE("estimate_direct gives exactly 0 for a light behind the surface", "[id:t6nee.direct.light-behind][task6_nee][fn:estimate_direct]") {
 	Scene scene = ceiling_light_scene(0.5f, 1.0f);
 	Pathtracer pt(scene, nee_settings());
 	Vec3 down{0.0f, -1.0f, 0.0f}; // a surface facing away from the light, seen from below
@@ -187,7 +187,7 @@ TEST_CASE("estimate_direct gives exactly 0 for a light behind the surface", "[ta
 }
 
 TEST_CASE("estimate_direct's mean is the light-sampled share the power heuristic gives it",
-          "[estimate][task6_nee][fn:estimate_direct]") {
+          "[id:t6nee.direct.mean][estimate][task6_nee][fn:estimate_direct]") {
 	// Two-sample z-test against the grader's own light samples, weighted by p_l^2 / (p_l^2 + p_b^2).
 	Scene scene = ceiling_light_scene(0.5f, 1.0f);
 	Pathtracer pt(scene, nee_settings());
@@ -213,7 +213,7 @@ TEST_CASE("estimate_direct's mean is the light-sampled share the power heuristic
 }
 
 TEST_CASE("light-sampled and BSDF-sampled shares add up to Lambert's formula",
-          "[estimate][task6_nee][uses:estimate_direct][uses:power_heuristic]") {
+          "[id:t6nee.direct.lambert][estimate][task6_nee][uses:estimate_direct][uses:power_heuristic]") {
 	SECTION("a square light over a tilted receiver") {
 		Scene scene = ceiling_light_scene(0.5f, 1.0f);
 		Pathtracer pt(scene, nee_settings());
@@ -248,7 +248,7 @@ TEST_CASE("light-sampled and BSDF-sampled shares add up to Lambert's formula",
 }
 
 TEST_CASE("the NEE integrator renders a floor under a square light as rho E / pi (max_depth 1)",
-          "[estimate][task6_nee][uses:estimate_direct][uses:power_heuristic]") {
+          "[id:t6nee.integrator.floor][estimate][task6_nee][uses:estimate_direct][uses:power_heuristic]") {
 	struct Case {
 		float half_side, height, radiance;
 		uint64_t seed;
@@ -266,7 +266,7 @@ TEST_CASE("the NEE integrator renders a floor under a square light as rho E / pi
 }
 
 TEST_CASE("under a small light, next-event estimation is less noisy than BSDF sampling",
-          "[task6_nee][uses:estimate_direct][uses:power_heuristic]") {
+          "[id:t6nee.integrator.lower-variance][task6_nee][uses:estimate_direct][uses:power_heuristic]") {
 	// Square of half-side 0.1 at height 1 over a point facing it: one-sided z-test of var(BSDF) -
 	// var(NEE) > 0, with the sampling variance of a sample variance, (m4 - s^4) / n.
 	Scene scene = ceiling_light_scene(0.1f, 1.0f);
@@ -288,7 +288,7 @@ TEST_CASE("under a small light, next-event estimation is less noisy than BSDF sa
 }
 
 TEST_CASE("the NEE integrator renders cornell_small_light like its reference image",
-          "[estimate][task6_nee][image][statistical][uses:estimate_direct][uses:power_heuristic]") {
+          "[id:t6nee.image.cornell-small-light][estimate][task6_nee][image][statistical][uses:estimate_direct][uses:power_heuristic]") {
 	Image_Test test;
 	test.name = "cornell_small_light";
 	test.hint = "--integrator nee with your estimate_direct and power_heuristic: each share must be weighted by the "

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-TEST_CASE("power_heuristic is pdf_f^2 / (pdf_f^2 + pdf_g^2)", "[task6_nee][fn:power_heuristic]") {
+TEST_CASE("power_heuristic is pdf_f^2 / (pdf_f^2 + pdf_g^2)", "[id:t6nee.power.formula][task6_nee][fn:power_heuristic]") {
 	const std::vector<Vec2> pairs{{1.0f, 1.0f}, {3.0f, 1.0f}, {1.0f, 3.0f}, {2.0f, 0.0f}, {0.5f, 0.25f}};
 	const std::vector<float> expected{0.5f, 0.9f, 0.1f, 1.0f, 0.8f};
 	std::vector<float> weights = student_power_heuristic(pairs);
@@ -16,7 +16,7 @@ TEST_CASE("power_heuristic is pdf_f^2 / (pdf_f^2 + pdf_g^2)", "[task6_nee][fn:po
 	}
 }
 
-TEST_CASE("power_heuristic gives 0 to a strategy that cannot draw the direction", "[task6_nee][fn:power_heuristic]") {
+TEST_CASE("power_heuristic gives 0 to a strategy that cannot draw the direction", "[id:t6nee.power.zero-density][task6_nee][fn:power_heuristic]") {
 	const std::vector<Vec2> pairs{{0.0f, 0.0f}, {0.0f, 1.0f}, {0.0f, 1e6f}};
 	std::vector<float> weights = student_power_heuristic(pairs);
 	for (size_t i = 0; i < pairs.size(); i++) {
@@ -28,7 +28,7 @@ TEST_CASE("power_heuristic gives 0 to a strategy that cannot draw the direction"
 }
 
 TEST_CASE("the weights of the two strategies add up to 1, for densities large and small",
-          "[task6_nee][fn:power_heuristic]") {
+          "[id:t6nee.power.sum-to-one][task6_nee][fn:power_heuristic]") {
 	// Squares of densities near a light's silhouette (1e20 and more) overflow a float, squares of
 	// tiny ones underflow to 0: a weight must stay finite and the pair must still sum to 1.
 	std::vector<Vec2> pairs; // each (f, g) followed by (g, f)

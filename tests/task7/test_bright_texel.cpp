@@ -68,7 +68,7 @@ bool in_reach(const Bright_Texel& t, int64_t i, int64_t j) {
 
 } // namespace
 
-TEST_CASE("one bright texel: importance samples stay in the texels its light reaches", "[task7][bright-texel][uses:Env_Map::evaluate][uses:Image::sample][uses:Image::pdf]") {
+TEST_CASE("one bright texel: importance samples stay in the texels its light reaches", "[id:t7.bright-texel.support][task7][bright-texel][uses:Env_Map::evaluate][uses:Image::sample][uses:Image::pdf]") {
 	for (const Bright_Texel& t : cases()) {
 		const size_t N = 100000;
 		std::vector<Vec3> samples =
@@ -90,7 +90,7 @@ TEST_CASE("one bright texel: importance samples stay in the texels its light rea
 }
 
 TEST_CASE("one bright texel: the pdf is positive wherever its radiance is, and L / pdf stays bounded",
-          "[task7][bright-texel][uses:Env_Map::evaluate][uses:Image::sample][uses:Image::pdf]") {
+          "[id:t7.bright-texel.bounded][task7][bright-texel][uses:Env_Map::evaluate][uses:Image::sample][uses:Image::pdf]") {
 	// A table built from the texels' own luminance gives probability 0 to the neighbours, which the
 	// bilinear lookup lights: light-only sampling would never find that light (a biased render). Any
 	// table that follows the lookup keeps L / pdf within a small multiple of the integral of L:
@@ -148,7 +148,7 @@ TEST_CASE("one bright texel: the pdf is positive wherever its radiance is, and L
 	}
 }
 
-TEST_CASE("one bright texel: the weights L / pdf average the integral of its radiance", "[estimate][task7][bright-texel][statistical][uses:Env_Map::evaluate][uses:Image::sample][uses:Image::pdf]") {
+TEST_CASE("one bright texel: the weights L / pdf average the integral of its radiance", "[id:t7.bright-texel.integral][estimate][task7][bright-texel][statistical][uses:Env_Map::evaluate][uses:Image::sample][uses:Image::pdf]") {
 	// E[L / pdf] over importance samples = the integral of L over the directions where pdf > 0: all
 	// of it only if the pdf covers the whole bilinear footprint (two of the grader's z-tests).
 	for (const Bright_Texel& t : cases()) {

@@ -78,7 +78,7 @@ struct Lookup_Checker {
 };
 } // namespace
 
-TEST_CASE("evaluate returns a texel's value at its centre", "[task7][evaluate][fn:Env_Map::evaluate][uses:direction_to_uv]") {
+TEST_CASE("evaluate returns a texel's value at its centre", "[id:t7.evaluate.centre][task7][evaluate][fn:Env_Map::evaluate][uses:direction_to_uv]") {
 	Lookup_Checker c;
 	for (uint32_t j = 0; j < H; j++)
 		for (uint32_t i = 0; i < W; i++) c.add(i + 0.5, j + 0.5, c.texel(i, j), "texel centre");
@@ -89,7 +89,7 @@ TEST_CASE("evaluate returns a texel's value at its centre", "[task7][evaluate][f
 	CHECK(c.failures == 0);
 }
 
-TEST_CASE("evaluate interpolates bilinearly between texel centres", "[task7][evaluate][fn:Env_Map::evaluate][uses:direction_to_uv]") {
+TEST_CASE("evaluate interpolates bilinearly between texel centres", "[id:t7.evaluate.bilinear][task7][evaluate][fn:Env_Map::evaluate][uses:direction_to_uv]") {
 	Lookup_Checker c;
 	for (uint32_t j = 0; j < H; j++) {
 		for (uint32_t i = 0; i + 1 < W; i++) {
@@ -116,7 +116,7 @@ TEST_CASE("evaluate interpolates bilinearly between texel centres", "[task7][eva
 	CHECK(c.failures == 0);
 }
 
-TEST_CASE("evaluate wraps around the seam at phi = 0", "[task7][evaluate][fn:Env_Map::evaluate][uses:direction_to_uv]") {
+TEST_CASE("evaluate wraps around the seam at phi = 0", "[id:t7.evaluate.seam][task7][evaluate][fn:Env_Map::evaluate][uses:direction_to_uv]") {
 	{
 		Lookup_Checker c;
 		for (uint32_t j = 0; j < H; j++) {
@@ -153,7 +153,7 @@ TEST_CASE("evaluate wraps around the seam at phi = 0", "[task7][evaluate][fn:Env
 	}
 }
 
-TEST_CASE("evaluate clamps at the poles: the first and last rows are interpolated in u only", "[task7][evaluate][fn:Env_Map::evaluate][uses:direction_to_uv]") {
+TEST_CASE("evaluate clamps at the poles: the first and last rows are interpolated in u only", "[id:t7.evaluate.poles][task7][evaluate][fn:Env_Map::evaluate][uses:direction_to_uv]") {
 	{
 		Lookup_Checker c;
 		for (uint32_t i = 0; i + 1 < W; i++) {

@@ -58,7 +58,7 @@ constexpr float Y_RED = 0.2126f, Y_GREEN = 0.7152f;
 
 } // namespace
 
-TEST_CASE("Image: pdf_texel and cdf describe a probability distribution over the texels", "[task7][importance][fn:Image (tables)]") {
+TEST_CASE("Image: pdf_texel and cdf describe a probability distribution over the texels", "[id:t7.importance.tables][task7][importance][fn:Image (tables)]") {
 	const Named_Map maps[] = {{"a constant map", HDR_Image(32, 16, Spectrum{1.0f})},
 	                          {"a gradient", gradient_map()},
 	                          {"one bright texel", inner_texel_map()},
@@ -91,7 +91,7 @@ TEST_CASE("Image: pdf_texel and cdf describe a probability distribution over the
 	}
 }
 
-TEST_CASE("Image: a texel's probability is proportional to luminance * sin(theta)", "[task7][importance][fn:Image (tables)]") {
+TEST_CASE("Image: a texel's probability is proportional to luminance * sin(theta)", "[id:t7.importance.proportional][task7][importance][fn:Image (tables)]") {
 	// Columns 0-15 red, 16-31 green. The bilinear lookup mixes only neighbouring columns, so away
 	// from the colour boundaries (and the seam) a texel's probability is Y * sin(theta_row) / total.
 	// sin(theta) at the row's centre and its mean over the row differ by less than 0.2 % at 16 rows,
@@ -131,7 +131,7 @@ TEST_CASE("Image: a texel's probability is proportional to luminance * sin(theta
 	CHECK(bad == 0);
 }
 
-TEST_CASE("Image::pdf integrates to 1 over the sphere", "[task7][importance][fn:Image::pdf][uses:Image (tables)][uses:direction_to_uv]") {
+TEST_CASE("Image::pdf integrates to 1 over the sphere", "[id:t7.importance.pdf-integral][task7][importance][fn:Image::pdf][uses:Image (tables)][uses:direction_to_uv]") {
 	const Named_Map maps[] = {{"a constant map", HDR_Image(32, 16, Spectrum{1.0f})},
 	                          {"a gradient", gradient_map()},
 	                          {"one bright texel", inner_texel_map()},
@@ -150,7 +150,7 @@ TEST_CASE("Image::pdf integrates to 1 over the sphere", "[task7][importance][fn:
 	}
 }
 
-TEST_CASE("Image::sample draws directions with the density Image::pdf (chi-square)", "[task7][importance][statistical][fn:Image::sample][uses:Image (tables)][uses:Image::pdf][uses:uv_to_direction]") {
+TEST_CASE("Image::sample draws directions with the density Image::pdf (chi-square)", "[id:t7.importance.sample-chi2][task7][importance][statistical][fn:Image::sample][uses:Image (tables)][uses:Image::pdf][uses:uv_to_direction]") {
 	// Four of the grader's CHI2_TESTS. The cells refine the texel grid 2 x 2, so each cell lies in one
 	// texel, where pdf * sin(theta) is constant and the expected counts are exact.
 	const Named_Map maps[] = {{"one bright texel", inner_texel_map()},
@@ -181,7 +181,7 @@ TEST_CASE("Image::sample draws directions with the density Image::pdf (chi-squar
 	}
 }
 
-TEST_CASE("a constant map: the weights L / pdf average 4 pi L and stay below twice that", "[estimate][task7][importance][statistical][uses:Image::sample][uses:Image::pdf]") {
+TEST_CASE("a constant map: the weights L / pdf average 4 pi L and stay below twice that", "[id:t7.importance.constant-map][estimate][task7][importance][statistical][uses:Image::sample][uses:Image::pdf]") {
 	// E[L / pdf] = integral of L over the sphere = 4 pi L for any correct pdf (three of the grader's
 	// z-tests). A weight is 4 pi L sin(theta) / sin(theta_row) up to the table's normalization;
 	// sin(theta) / sin(theta_row) < 2 in the rows at the poles (sin(2x) / sin(x) = 2 cos(x) with the
@@ -243,7 +243,7 @@ TEST_CASE("a constant map: the weights L / pdf average 4 pi L and stay below twi
 	CHECK(noise.pass);
 }
 
-TEST_CASE("a black map still gives valid samples and a normalized pdf", "[task7][importance][fn:Image (tables)][uses:Image::sample][uses:Image::pdf]") {
+TEST_CASE("a black map still gives valid samples and a normalized pdf", "[id:t7.importance.black-map][task7][importance][fn:Image (tables)][uses:Image::sample][uses:Image::pdf]") {
 	// Nothing to importance-sample: the table must not divide by a zero total (handout §7.4).
 	HDR_Image black(16, 8);
 	std::vector<Vec2> us = unit_points(sampling_seed("black map", 77), 1000);

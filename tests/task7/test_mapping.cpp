@@ -23,7 +23,7 @@ std::vector<Vec3> student_directions(const std::vector<Vec2>& uvs) {
 }
 } // namespace
 
-TEST_CASE("direction_to_uv: known directions land where the convention puts them", "[task7][mapping][fn:direction_to_uv]") {
+TEST_CASE("direction_to_uv: known directions land where the convention puts them", "[id:t7.mapping.to-uv][task7][mapping][fn:direction_to_uv]") {
 	struct Known {
 		Vec3 dir;
 		Vec2 uv;
@@ -61,7 +61,7 @@ TEST_CASE("direction_to_uv: known directions land where the convention puts them
 	}
 }
 
-TEST_CASE("uv_to_direction: known uv give the directions of the convention", "[task7][mapping][fn:uv_to_direction]") {
+TEST_CASE("uv_to_direction: known uv give the directions of the convention", "[id:t7.mapping.to-direction][task7][mapping][fn:uv_to_direction]") {
 	struct Known {
 		Vec2 uv;
 		Vec3 dir;
@@ -83,7 +83,7 @@ TEST_CASE("uv_to_direction: known uv give the directions of the convention", "[t
 	}
 }
 
-TEST_CASE("uv_to_direction and direction_to_uv are each other's inverse", "[task7][mapping][fn:direction_to_uv][fn:uv_to_direction]") {
+TEST_CASE("uv_to_direction and direction_to_uv are each other's inverse", "[id:t7.mapping.inverse][task7][mapping][fn:direction_to_uv][fn:uv_to_direction]") {
 	RNG rng(sampling_seed("inverse", 71));
 	std::vector<Vec2> uvs;
 	std::vector<Vec3> expected_dirs;
@@ -120,7 +120,7 @@ TEST_CASE("uv_to_direction and direction_to_uv are each other's inverse", "[task
 	}
 }
 
-TEST_CASE("direction_to_uv: u stays in [0, 1) and v in [0, 1], also just below phi = 0", "[task7][mapping][fn:direction_to_uv]") {
+TEST_CASE("direction_to_uv: u stays in [0, 1) and v in [0, 1], also just below phi = 0", "[id:t7.mapping.uv-range][task7][mapping][fn:direction_to_uv]") {
 	// atan2 returns angles in [-pi, pi]: negative angles need 2 pi added, and a tiny negative angle
 	// plus 2 pi rounds to 2 pi, which is u = 1 (the same meridian as u = 0).
 	std::vector<Vec3> dirs;

@@ -22,7 +22,7 @@ struct Named_Env {
 };
 } // namespace
 
-TEST_CASE("no NaN or infinity at the poles: direction_to_uv, evaluate and pdf", "[task7][poles][fn:direction_to_uv][fn:Env_Map::evaluate][fn:Image::pdf]") {
+TEST_CASE("no NaN or infinity at the poles: direction_to_uv, evaluate and pdf", "[id:t7.poles.no-nan][task7][poles][fn:direction_to_uv][fn:Env_Map::evaluate][fn:Image::pdf]") {
 	const Named_Env envs[] = {{"a gradient, importance-sampled", gradient_map(), true},
 	                          {"one bright texel at the north pole, importance-sampled", one_texel_map(32, 16, 5, 0), true},
 	                          {"one bright texel at the south pole, importance-sampled", one_texel_map(32, 16, 5, 15), true},
@@ -52,7 +52,7 @@ TEST_CASE("no NaN or infinity at the poles: direction_to_uv, evaluate and pdf", 
 	}
 }
 
-TEST_CASE("no NaN at the poles: sample at the ends of [0, 1)", "[task7][poles][fn:Image::sample]") {
+TEST_CASE("no NaN at the poles: sample at the ends of [0, 1)", "[id:t7.poles.sample-ends][task7][poles][fn:Image::sample]") {
 	// u = 0 and the largest float below 1 put samples on the first and last rows' outer edges.
 	const Named_Env envs[] = {{"a gradient, importance-sampled", gradient_map(), true},
 	                          {"one bright texel at the north pole", one_texel_map(32, 16, 0, 0), true},

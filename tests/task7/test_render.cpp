@@ -55,7 +55,7 @@ void check_channels(const Furnace_Render& film, const Spectrum& expected, Pixel_
 }
 } // namespace
 
-TEST_CASE("a diffuse sphere under a constant Env_Map renders albedo * L", "[estimate][task7][render][statistical][uses:Env_Map::sample][uses:Env_Map::pdf][uses:Env_Map::evaluate][uses:Uniform::sample]") {
+TEST_CASE("a diffuse sphere under a constant Env_Map renders albedo * L", "[id:t7.render.env-map][estimate][task7][render][statistical][uses:Env_Map::sample][uses:Env_Map::pdf][uses:Env_Map::evaluate][uses:Uniform::sample]") {
 	// The image is constant, so evaluate returns L in every direction, and with light sampling
 	// (task 6) the path tracer also draws directions with Env_Map::sample and weighs them with pdf.
 	Colours c = colours("render under Env_Map");
@@ -75,7 +75,7 @@ TEST_CASE("a diffuse sphere under a constant Env_Map renders albedo * L", "[esti
 	            "(handout §7.4)");
 }
 
-TEST_CASE("a diffuse sphere under Env_Constant renders albedo * L", "[estimate][task7][render][statistical][uses:Env_Map::sample][uses:Env_Map::pdf][uses:Env_Map::evaluate][uses:Uniform::sample]") {
+TEST_CASE("a diffuse sphere under Env_Constant renders albedo * L", "[id:t7.render.env-constant][estimate][task7][render][statistical][uses:Env_Map::sample][uses:Env_Map::pdf][uses:Env_Map::evaluate][uses:Uniform::sample]") {
 	// Env_Constant samples with Samplers::Sphere::Uniform (used when the path tracer samples lights).
 	Colours c = colours("render under Env_Constant");
 	Furnace_Render film = render_sphere(Env_Constant{c.sky}, c);

@@ -23,7 +23,7 @@ std::vector<Vec3> some_directions() {
 }
 } // namespace
 
-TEST_CASE("Uniform::pdf is 1 / (4 pi) in every direction", "[task7][uniform][fn:Uniform::pdf]") {
+TEST_CASE("Uniform::pdf is 1 / (4 pi) in every direction", "[id:t7.uniform.pdf][task7][uniform][fn:Uniform::pdf]") {
 	std::vector<Vec3> dirs = some_directions();
 	std::vector<float> pdfs = student_uniform({}, dirs).pdfs;
 	for (size_t n = 0; n < dirs.size(); n++) {
@@ -33,7 +33,7 @@ TEST_CASE("Uniform::pdf is 1 / (4 pi) in every direction", "[task7][uniform][fn:
 	}
 }
 
-TEST_CASE("Uniform::sample returns unit directions, even for u at the ends of [0, 1)", "[task7][uniform][fn:Uniform::sample]") {
+TEST_CASE("Uniform::sample returns unit directions, even for u at the ends of [0, 1)", "[id:t7.uniform.unit-directions][task7][uniform][fn:Uniform::sample]") {
 	const float ends[] = {0.0f, 0.5f, 0x1.fffffep-1f};
 	std::vector<Vec2> us;
 	for (float a : ends) {
@@ -49,7 +49,7 @@ TEST_CASE("Uniform::sample returns unit directions, even for u at the ends of [0
 	}
 }
 
-TEST_CASE("Uniform::sample covers the sphere uniformly (chi-square)", "[task7][uniform][statistical][fn:Uniform::sample]") {
+TEST_CASE("Uniform::sample covers the sphere uniformly (chi-square)", "[id:t7.uniform.chi2][task7][uniform][statistical][fn:Uniform::sample]") {
 	stats::Sphere_Chi2_Settings settings;
 	settings.seed = sampling_seed("uniform chi-square", 73);
 	protocol::Sampler_Answer answer =
@@ -61,7 +61,7 @@ TEST_CASE("Uniform::sample covers the sphere uniformly (chi-square)", "[task7][u
 	CHECK(result.pass(chi2_alpha()));
 }
 
-TEST_CASE("Env_Constant samples uniformly: its pdf is 1 / (4 pi)", "[task7][uniform][uses:Uniform::sample][uses:Uniform::pdf]") {
+TEST_CASE("Env_Constant samples uniformly: its pdf is 1 / (4 pi)", "[id:t7.env-constant.uniform][task7][uniform][uses:Uniform::sample][uses:Uniform::pdf]") {
 	// Env_Constant (framework) delegates to Samplers::Sphere::Uniform.
 	std::vector<Vec3> dirs = some_directions();
 	std::vector<float> pdfs = judge::ask(protocol::Env_Constant_Queries{Spectrum{1.0f}, {}, dirs}).queries.pdfs;
@@ -71,7 +71,7 @@ TEST_CASE("Env_Constant samples uniformly: its pdf is 1 / (4 pi)", "[task7][unif
 	}
 }
 
-TEST_CASE("Env_Map without importance sampling samples the sphere uniformly", "[task7][uniform][fn:Env_Map::sample][uses:Uniform::sample][uses:Uniform::pdf]") {
+TEST_CASE("Env_Map without importance sampling samples the sphere uniformly", "[id:t7.env-map.uniform][task7][uniform][fn:Env_Map::sample][uses:Uniform::sample][uses:Uniform::pdf]") {
 	std::vector<Vec3> dirs = some_directions();
 	std::vector<Vec2> us = unit_points(sampling_seed("Env_Map uniform", 74), 100);
 	protocol::Env_Map_Queries::Answer env = student_env_map(gradient_map(), false, us, dirs);
@@ -89,7 +89,7 @@ TEST_CASE("Env_Map without importance sampling samples the sphere uniformly", "[
 	}
 }
 
-TEST_CASE("Env_Map with importance sampling uses its Image sampler", "[task7][uniform][fn:Env_Map::sample][fn:Env_Map::pdf][uses:Image::sample][uses:Image::pdf]") {
+TEST_CASE("Env_Map with importance sampling uses its Image sampler", "[id:t7.env-map.importance][task7][uniform][fn:Env_Map::sample][fn:Env_Map::pdf][uses:Image::sample][uses:Image::pdf]") {
 	// The pdfs are compared at directions spread like importance samples (the reference's).
 	HDR_Image image = gradient_map();
 	std::vector<Vec2> us = unit_points(sampling_seed("Env_Map importance", 75), 100);
