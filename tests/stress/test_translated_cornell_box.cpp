@@ -1,4 +1,4 @@
-// Stress (handout §4.3): the Cornell box moved 10^4 away from the origin renders the same as the
+// Stress (handout §4.5): the Cornell box moved 10^4 away from the origin renders the same as the
 // original. Far from the origin a float coordinate is only good to ~1e-3, so every spawned ray
 // needs an offset that grows with the coordinates; with a fixed 1e-4, ~40 % of the bounces there
 // hit the surface they leave and the picture darkens (testing-anchors §3.3).
@@ -92,7 +92,7 @@ TEST_CASE("Stress: the Cornell box translated by 10^4 renders the same as the or
 	}
 	INFO(rejected << " of " << tests << " block means differ (|z| > " << z_max << ") between the Cornell box and "
 	              << "the same box moved by 10^4. Far from the origin, spawned rays must start at an offset that "
-	                 "grows with the hit point's coordinates (handout §4.3).");
+	                 "grows with the hit point's coordinates (handout §4.2).");
 	CHECK(rejected == 0);
 	std::printf("stress count: translated Cornell box: %zu of %zu block means differ (max |z| %.2f, limit %.2f)\n",
 	            rejected, tests, worst, z_max);
