@@ -4,9 +4,19 @@
 #include "error.h"
 #include "nee_integrator.h"
 
-Spectrum trace_nee(const Pathtracer&, RNG&, const Ray&) {
-	throw Input_Error("--integrator nee needs the reference of task 4: next-event estimation is not part of a "
-	                  "program built with your task 4 (use --integrator mixture)");
+namespace {
+class Refusing_Integrator : public Path_Integrator {
+public:
+	Spectrum radiance(const Pathtracer&, RNG&, const Ray&) const override {
+		throw Input_Error("--integrator nee needs the reference of task 4: next-event estimation is not part of a "
+		                  "program built with your task 4 (use --integrator mixture)");
+	}
+};
+} // namespace
+
+const Path_Integrator& nee_integrator() {
+	static const Refusing_Integrator refusing;
+	return refusing;
 }
 
 float light_pdf(const Pathtracer&, const Ray&, const Trace&) {

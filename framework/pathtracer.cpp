@@ -1,7 +1,7 @@
 #include "pathtracer.h"
 #include "bvh_visits.h"
 #include "frame.h"
-#include "nee_integrator.h"
+#include "path_integrator.h"
 #include "render_observer.h"
 
 #include <array>
@@ -50,15 +50,8 @@ Pathtracer::Pathtracer(const Scene& scene_, Render_Settings settings_, View view
 }
 
 Spectrum Pathtracer::trace(RNG& rng, const Ray& ray) const {
-	if (view == View::path && settings.integrator == Integrator::nee) return trace_nee(*this, rng, ray);
-	rng.begin_vertex(ray.depth);
-	return observe<Ray_Traced>(
-		[&] {
-			if (view != View::path) return debug_view(ray);
-			Trace hit = observe<Closest_Hit>([&] { return scene.hit(ray); }, ray);
-			return hit.hit ? shade(rng, ray, hit) : scene.environment_radiance(ray.dir);
-		},
-		ray);
+	if (view == View::path) return path_integrator(settings.integrator).radiance(*this, rng, ray);
+	return traced(rng, ray, [&] { return debug_view(ray); });
 }
 
 Spectrum Pathtracer::eye_light(const Ray& ray, const Trace& hit) const {

@@ -7,6 +7,7 @@
 // direct lighting (one bounce), and so on.
 #include "light_distribution.h"
 #include "scene.h"
+#include "spawn_ray.h"
 
 #include <string>
 
@@ -55,8 +56,9 @@ public:
 	// uniformly at random in the pixel, the camera ray through it, and trace() of that ray.
 	Spectrum trace_pixel(uint32_t x, uint32_t y, RNG& rng) const;
 
-	// Framework: radiance arriving along `ray` in the selected view. For View::path it intersects
-	// the scene, returns the environment on a miss and shade() on a hit.
+	// Framework: radiance arriving along `ray` in the selected view. For View::path, the estimate of
+	// the integrator settings.integrator names (path_integrator.h): by default task 4's, which
+	// intersects the scene and returns the environment on a miss and shade() on a hit.
 	Spectrum trace(RNG& rng, const Ray& ray) const;
 
 	// Task 4 (student/task4_path.cpp): the radiance leaving hit.position towards ray.point:

@@ -20,9 +20,8 @@ struct Ray {
 	Vec3 point;
 	Vec3 dir;
 	// A hit counts only when dist_bounds.x <= t <= dist_bounds.y. So that a new ray cannot hit the
-	// surface it leaves, a path tracer starts it a little off that surface along the normal (the
-	// reference and the NEE integrator do, with .x = 0) or raises .x above 0 (handout §4.2). A
-	// closest-hit search lowers .y as it goes.
+	// surface it leaves, a path starts it a little off that surface along the normal, with .x = 0
+	// (spawn_ray, spawn_ray.h; handout §4.2). A closest-hit search lowers .y as it goes.
 	Vec2 dist_bounds{0.0f, INF_F};
 	// How many times the path has scattered before this ray (the camera ray has depth 0).
 	uint32_t depth = 0;

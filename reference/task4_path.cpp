@@ -40,31 +40,6 @@ float BSDF_Lambertian::pdf(Vec3 out_dir, Vec3 in_dir) const {
 // ---- The estimator (handout §4.2, §4.3) ----------------------------------------------------------
 
 namespace {
-// How far a new ray must stay from the surface it leaves: a distance that grows with the magnitude
-// of the hit point, because the rounding error of a float coordinate does (the scheme of Mitsuba 3's
-// RayEpsilon): (1 + max |p_i|) * 64 * 2^-24, about 4e-6 near the origin and 0.04 at 10^4. The
-// stress suite finds self-intersections with 2 * 2^-24 (1497 of 40000 rays) and none with 8; 64
-// keeps a margin.
-float ray_offset(Vec3 p) {
-	constexpr float RAY_EPSILON = 64.0f * 0x1p-24f;
-	float magnitude = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-	return (1.0f + magnitude) * RAY_EPSILON;
-}
-
-// The hit point moved ray_offset off the surface, along the normal on the side `dir` points to.
-// Pushing the origin off, rather than only raising t_min, also protects grazing directions: a ray
-// at angle a to the surface is ray_offset / sin(a) along before it is ray_offset above, which for
-// light samples towards the far end of a wall is more than any t_min (the stress suite counts these).
-Vec3 lifted(const Trace& hit, Vec3 dir) {
-	Vec3 side = glm::dot(dir, hit.normal) >= 0.0f ? hit.normal : -hit.normal;
-	return hit.position + ray_offset(hit.position) * side;
-}
-
-// The new ray from a hit (handout §4.2): it starts at the lifted point and may hit anything from there on.
-Ray spawn_ray(const Trace& hit, Vec3 dir, uint32_t depth) {
-	return Ray(lifted(hit, dir), dir, Vec2{0.0f, INF_F}, depth);
-}
-
 // Russian roulette starts once a path has bounced this often: the first bounces carry most of the
 // image and are never cut.
 constexpr uint32_t ROULETTE_DEPTH = 3;

@@ -1,6 +1,6 @@
 #include "nee_integrator.h"
 #include "frame.h"
-#include "render_observer.h"
+#include "path_integrator.h"
 
 #include <algorithm>
 
@@ -17,15 +17,6 @@ struct Arrival {
 float emission_weight(const Pathtracer& pt, const Arrival& arrival, const Ray& ray, const Trace& hit) {
 	if (!arrival.light_sampled) return 1.0f;
 	return power_heuristic(arrival.bsdf_pdf, light_pdf(pt, ray, hit));
-}
-
-// Rays leave a surface from the hit point lifted off it, by an offset that grows with the
-// coordinates' rounding error: task 4's scheme (Mitsuba 3's RayEpsilon, reference/task4_path.cpp).
-Vec3 lifted(const Trace& hit, Vec3 dir) {
-	constexpr float RAY_EPSILON = 64.0f * 0x1p-24f;
-	Vec3 p = hit.position;
-	float offset = (1.0f + std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)})) * RAY_EPSILON;
-	return p + offset * (glm::dot(dir, hit.normal) >= 0.0f ? hit.normal : -hit.normal);
 }
 
 float max_component(Spectrum s) {
@@ -68,22 +59,25 @@ Spectrum shade_nee(const Pathtracer& pt, RNG& rng, const Ray& ray, const Trace& 
 			weight /= q;
 		}
 	}
-	Vec3 dir = frame.to_world(s.direction);
-	Ray next(lifted(hit, dir), dir, Vec2{0.0f, INF_F}, ray.depth + 1);
+	Ray next = spawn_ray(hit, frame.to_world(s.direction), ray.depth + 1);
 	return radiance + weight * radiance_along(pt, rng, next, Arrival{light_sampled, pdf});
 }
 
-// The radiance arriving along `ray`, told to the render observer as Pathtracer::trace tells it.
+// The radiance arriving along `ray`.
 Spectrum radiance_along(const Pathtracer& pt, RNG& rng, const Ray& ray, const Arrival& arrival) {
-	rng.begin_vertex(ray.depth);
-	return observe<Ray_Traced>(
-		[&] {
-			Trace hit = observe<Closest_Hit>([&] { return pt.scene.hit(ray); }, ray);
-			return hit.hit ? shade_nee(pt, rng, ray, hit, arrival)
-			               : pt.scene.environment_radiance(ray.dir) * emission_weight(pt, arrival, ray, hit);
-		},
-		ray);
+	return traced(rng, ray, [&] {
+		Trace hit = observe<Closest_Hit>([&] { return pt.scene.hit(ray); }, ray);
+		return hit.hit ? shade_nee(pt, rng, ray, hit, arrival)
+		               : pt.scene.environment_radiance(ray.dir) * emission_weight(pt, arrival, ray, hit);
+	});
 }
+
+class Nee_Integrator : public Path_Integrator {
+public:
+	Spectrum radiance(const Pathtracer& pt, RNG& rng, const Ray& ray) const override {
+		return radiance_along(pt, rng, ray, Arrival{});
+	}
+};
 
 } // namespace
 
@@ -100,6 +94,7 @@ float light_pdf(const Pathtracer& pt, const Ray& ray, const Trace& hit) {
 	       scene.area_lights.point_pdf(size_t(light), ray.point, hit.position, hit.normal);
 }
 
-Spectrum trace_nee(const Pathtracer& pathtracer, RNG& rng, const Ray& ray) {
-	return radiance_along(pathtracer, rng, ray, Arrival{});
+const Path_Integrator& nee_integrator() {
+	static const Nee_Integrator nee;
+	return nee;
 }

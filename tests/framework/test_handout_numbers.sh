@@ -137,15 +137,13 @@ quoted handouts/task3_bvh.md 'at most \*\*@ ×\*\* that of' tests/task3/bvh_qual
 quoted handouts/task3_bvh.md 'at most \*\*@ ×\*\* those of' tests/task3/bvh_quality_test.cpp 'MAX_TESTS_RATIO = @;'
 quoted handouts/task3_bvh.md 'white \(@ or more\)' framework/pathtracer.cpp 'heat\(nodes / @\)'
 
-# Task 4: the ray offset (1 + max |p_i|) k 2^-24 of the reference's shade and of the NEE integrator,
-# the depth where roulette starts in both, the graders' float allowance and samples, the stress
-# suite's significance.
-quoted handouts/task4_path.md 'the reference uses k = @' reference/task4_path.cpp 'RAY_EPSILON = @ \* 0x'
-quoted handouts/task4_path.md 'the reference uses k = @' framework/sealed/nee_integrator.cpp 'RAY_EPSILON = @ \* 0x'
-quoted handouts/task4_path.md '^@ keeps a margin' reference/task4_path.cpp 'RAY_EPSILON = @ \* 0x'
-quoted handouts/task4_path.md 'as in §4.2 \(k = @\) only' reference/task4_path.cpp 'RAY_EPSILON = @ \* 0x'
-quoted handouts/task4_path.md '\) · k · @$' reference/task4_path.cpp 'RAY_EPSILON = [0-9.]+f \* @;'
-quoted handouts/task4_path.md '\) · k · @$' framework/sealed/nee_integrator.cpp 'RAY_EPSILON = [0-9.]+f \* @;'
+# Task 4: the ray offset (1 + max |p_i|) k 2^-24 of spawn_ray (every ray a path spawns), the depth
+# where roulette starts in the reference and the NEE integrator, the graders' float allowance and
+# samples, the stress suite's significance.
+quoted handouts/task4_path.md 'the framework uses k = @' framework/spawn_ray.h 'RAY_EPSILON = @ \* 0x'
+quoted handouts/task4_path.md '^their own floor again, with k = 4, 83\); @ keeps' framework/spawn_ray.h 'RAY_EPSILON = @ \* 0x'
+quoted handouts/task4_path.md 'the offset of §4.2 \(k = @\) only' framework/spawn_ray.h 'RAY_EPSILON = @ \* 0x'
+quoted handouts/task4_path.md '\) · k · @$' framework/spawn_ray.h 'RAY_EPSILON = [0-9.]+f \* @;'
 quoted handouts/task4_path.md '`ray.depth >= @`' reference/task4_path.cpp 'ROULETTE_DEPTH = @;'
 quoted handouts/task4_path.md '`ray.depth >= @`' framework/sealed/nee_integrator.cpp 'ROULETTE_DEPTH = @;'
 quoted handouts/task4_path.md 'allowance of @ \(relative\)' tests/support/film_statistics.h 'FLOAT_SLACK = @;'

@@ -29,5 +29,5 @@ Spectrum Pathtracer::shade(RNG& rng, const Ray& ray, const Trace& hit) const {
 	Ray camera_ray = ray;
 	camera_ray.depth = 0;
 	const_cast<Pathtracer*>(this)->settings.integrator = Integrator::nee;
-	return trace_nee(*this, rng, camera_ray);
+	return nee_integrator().radiance(*this, rng, camera_ray);
 }
