@@ -76,13 +76,19 @@ else()
 	message(FATAL_ERROR "neither reference/ nor prebuilt/ is present: the other tasks cannot be linked")
 endif()
 
-# lab_library(<name> <source>...): for code a student release ships compiled. In the instructors'
+# lab_library(<name> <source>...): for code a student release ships compiled (headers of its own
+# among the sources, so that the release leaves them out too). In the instructors'
 # repository, the object library <name> of the sources, and the archive prebuilt/lib<name>.a that
-# ./lab export ships in its place (built only on request). In a student release, <name> is that
-# archive, linked whole (like the object library it replaces), since the framework calls into it
-# and it calls into the framework.
+# ./lab export ships in its place (built only on request); each source is listed, with <name>, in
+# the build folder's shipped_compiled.txt (lab_write_shipped_compiled), which the export and its
+# tests read. In a student release, <name> is that archive, linked whole (like the object library it
+# replaces), since the framework calls into it and it calls into the framework.
 function(lab_library name)
 	if(LAB_REFERENCE_SOURCES)
+		foreach(source ${ARGN})
+			file(RELATIVE_PATH source ${LAB_ROOT} ${source})
+			set_property(GLOBAL APPEND PROPERTY LAB_SHIPPED_COMPILED "${name} ${source}")
+		endforeach()
 		add_library(${name} OBJECT ${ARGN})
 		target_link_libraries(${name} PUBLIC framework_headers)
 		lab_defaults(${name} OPTIMIZED)
@@ -99,6 +105,14 @@ function(lab_library name)
 	set_target_properties(${name}_archive PROPERTIES IMPORTED_LOCATION ${archive})
 	add_library(${name} INTERFACE)
 	target_link_libraries(${name} INTERFACE framework_headers "$<LINK_LIBRARY:WHOLE_ARCHIVE,${name}_archive>")
+endfunction()
+
+# lab_write_shipped_compiled(): writes <build>/shipped_compiled.txt, a line "<library> <source>" for
+# every source of a lab_library, the source's path relative to the repository's root.
+function(lab_write_shipped_compiled)
+	get_property(lines GLOBAL PROPERTY LAB_SHIPPED_COMPILED)
+	list(JOIN lines "\n" text)
+	file(WRITE ${CMAKE_BINARY_DIR}/shipped_compiled.txt "${text}\n")
 endfunction()
 
 # lab_link_tasks(<target> <impl> [TASK<n> <impl_n>]...): link task <n> from <impl_n> where one is

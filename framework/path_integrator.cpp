@@ -7,10 +7,9 @@ namespace {
 class Shading_Integrator : public Path_Integrator {
 public:
 	Spectrum radiance(const Pathtracer& pt, RNG& rng, const Ray& ray) const override {
-		return traced(rng, ray, [&] {
-			Trace hit = observe<Closest_Hit>([&] { return pt.scene.hit(ray); }, ray);
-			return hit.hit ? pt.shade(rng, ray, hit) : pt.scene.environment_radiance(ray.dir);
-		});
+		return trace_path_ray(
+			pt.scene, rng, ray, [&](const Trace& hit) { return pt.shade(rng, ray, hit); },
+			[&](const Trace&) { return pt.scene.environment_radiance(ray.dir); });
 	}
 };
 } // namespace

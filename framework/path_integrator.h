@@ -22,10 +22,16 @@ public:
 // The integrator `which` names.
 const Path_Integrator& path_integrator(Integrator which);
 
-// One ray of a path, as every integrator traces it: the sampler is told the ray's vertex
-// (RNG::begin_vertex), the render observer the ray and the radiance `estimate()` returns for it.
-template <class Estimate>
-Spectrum traced(RNG& rng, const Ray& ray, Estimate estimate) {
+// One ray of a path, as every integrator traces it: its closest hit in the scene, shaded by
+// shade(hit), or missed() where it leaves the scene. The sampler is told the ray's vertex
+// (RNG::begin_vertex), the render observer the ray, its hit and its radiance.
+template <class Shade, class Missed>
+Spectrum trace_path_ray(const Scene& scene, RNG& rng, const Ray& ray, Shade shade, Missed missed) {
 	rng.begin_vertex(ray.depth);
-	return observe<Ray_Traced>(estimate, ray);
+	return observe<Ray_Traced>(
+		[&] {
+			Trace hit = observe<Closest_Hit>([&] { return scene.hit(ray); }, ray);
+			return hit.hit ? shade(hit) : missed(hit);
+		},
+		ray);
 }

@@ -51,7 +51,8 @@ Pathtracer::Pathtracer(const Scene& scene_, Render_Settings settings_, View view
 
 Spectrum Pathtracer::trace(RNG& rng, const Ray& ray) const {
 	if (view == View::path) return path_integrator(settings.integrator).radiance(*this, rng, ray);
-	return traced(rng, ray, [&] { return debug_view(ray); });
+	rng.begin_vertex(ray.depth);
+	return observe<Ray_Traced>([&] { return debug_view(ray); }, ray);
 }
 
 Spectrum Pathtracer::eye_light(const Ray& ray, const Trace& hit) const {

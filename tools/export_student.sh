@@ -2,8 +2,9 @@
 # The student release: writes DIR with everything students need and no reference source. The
 # reference tasks ship compiled, one static archive per task in prebuilt/, so that each grader still
 # links the student's task N with the reference of the other six (cmake/lab.cmake); so does the
-# framework's fast accelerator (framework/accel/fast/, whose packed triangle and box tests would
-# give tasks 2 and 3 away).
+# framework's code that would give a task away (the fast accelerator's packed triangle and box
+# tests, the area lights' geometry, the NEE integrator): every lab_library, whose sources the build
+# lists in shipped_compiled.txt.
 #
 # usage: tools/export_student.sh DIR   (./lab export DIR)
 # LAB_EXPORT_BUILD_DIR: where the archives are built (default build-release-objects/).
@@ -22,23 +23,21 @@ fi
 # The reference tasks as students will compile their own: Release, the lab's flags, and no LTO
 # (LTO objects only link with the very compiler version that wrote them).
 cmake -S "$root" --preset dev -B "$objects" >&2
-archives=(framework_sealed_archive)
-for n in 1 2 3 4 5 6 7; do archives+=("task${n}_reference_archive"); done
-archives+=(accelerator_fast_archive integrator_nee_archive)
-cmake --build "$objects" --parallel "$jobs" --target "${archives[@]}" >&2
+mapfile -t libraries < <(cut -d' ' -f1 "$objects/shipped_compiled.txt" | sort -u)
+mapfile -t shipped_compiled < <(cut -d' ' -f2 "$objects/shipped_compiled.txt")
+cmake --build "$objects" --parallel "$jobs" --target "${libraries[@]/%/_archive}" >&2
 
-# The tree: everything but reference/, the framework's code that carries task algorithms
-# (framework/sealed/, framework/accel/fast/: shipped compiled), the instructors' tests (stress,
-# images, crosscheck, fuzz, export, isolation, mutants, security, class, gradescope; the mutants'
-# edits quote the reference) and the benchmarks. tests/judge runs the graders; tests/report is the
+# The tree: everything but reference/, the framework's code that ships compiled, the instructors'
+# tests (stress, images, crosscheck, fuzz, export, isolation, mutants, security, class, gradescope;
+# the mutants' edits quote the reference) and the benchmarks. tests/judge runs the graders; tests/report is the
 # grade report (./lab report), whose test in Chromium is registered only where reference/ exists.
 mkdir -p "$dest/tests" "$dest/prebuilt" "$dest/tools"
 (cd "$root" && cp -R CMakeLists.txt CMakePresets.json lab cmake framework tasks student scenes handouts "$dest/")
-rm -r "$dest/framework/sealed" "$dest/framework/accel/fast"
+for source in "${shipped_compiled[@]}"; do rm -f "$dest/$source"; done
+find "$dest/framework" -type d -empty -delete
 cp "$root/tools/compile-student" "$root/tools/sandboxed" "$dest/tools/"
 (cd "$root/tests" && cp -R CMakeLists.txt judge support framework task1 task2 task3 task4 task5 task6 task6_nee task7 report "$dest/tests/")
-cp "$objects"/prebuilt/libtask[1-7]_reference.a "$objects"/prebuilt/libaccelerator_fast.a "$objects"/prebuilt/libintegrator_nee.a \
-	"$objects/prebuilt/libframework_sealed.a" "$dest/prebuilt/"
+for library in "${libraries[@]}"; do cp "$objects/prebuilt/lib$library.a" "$dest/prebuilt/"; done
 
 # The students' README: the "For students" section of the instructors' README.
 {

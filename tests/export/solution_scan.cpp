@@ -1,6 +1,6 @@
 // Finds solution code by function (the export test, tests/export/test_export.sh): every function of
-// the solution sources (reference/, the framework's sealed sources) is compared with every function
-// of the release's sources; a release function that contains most of a solution function's code,
+// the solution sources (reference/, the framework's shipped-compiled sources) is compared with every
+// function of the release's sources; a release function that contains most of a solution function's code,
 // even with other names, is reported.
 //
 //   solution_scan --solution FILE... --release FILE...

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The student release (./lab export) in a temporary folder: it must hold no solution source (no
-# reference/, no framework/sealed/ or framework/accel/fast/, no line of reference code, no function of
-# the reference or of those framework sources, renamed or not), and its task-1 grader must build from
+# reference/, no source the build lists as shipped compiled (shipped_compiled.txt: the reference's,
+# the framework's lab_library sources), no line of reference code, no function of the reference or of
+# those framework sources, renamed or not), and its task-1 grader must build from
 # the prebuilt reference with the release's presets and fail on the shipped stub.
 #
 # Everything the release's text (README, handouts, ./lab help, code comments) names, the release has:
@@ -24,16 +25,16 @@ release=$tmp/release
 
 # No reference source: no reference/ folder, and no line of reference code that the stubs lack.
 [ ! -e "$release/reference" ] || fail "the release has a reference/ folder"
-[ ! -e "$release/framework/sealed" ] || fail "the release has the framework's sealed sources"
-[ -f "$release/prebuilt/libframework_sealed.a" ] || fail "prebuilt/libframework_sealed.a is missing"
-for n in 1 2 3 4 5 6 7; do
-	[ -f "$release/prebuilt/libtask${n}_reference.a" ] || fail "prebuilt/libtask${n}_reference.a is missing"
-done
-[ ! -e "$release/framework/accel/fast" ] || fail "the release has the fast accelerator's source, framework/accel/fast/"
+manifest=$tmp/objects/shipped_compiled.txt
+grep -q '^framework_sealed framework/lights.cpp$' "$manifest" && grep -q '^integrator_nee ' "$manifest" &&
+	grep -q '^accelerator_fast framework/accel/fast/wide_bvh.h$' "$manifest" ||
+	fail "$manifest does not list the framework's shipped-compiled sources: this check would see nothing"
+while read -r library source; do
+	[ ! -e "$release/$source" ] || fail "the release has $source, which ships compiled in prebuilt/lib$library.a"
+	[ -f "$release/prebuilt/lib$library.a" ] || fail "prebuilt/lib$library.a is missing"
+done <"$manifest"
 # The mutants' edits quote the reference line by line (tests/mutants/README.md).
 [ ! -e "$release/tests/mutants" ] || fail "the release has the instructors' mutants, tests/mutants/"
-[ -f "$release/prebuilt/libaccelerator_fast.a" ] || fail "prebuilt/libaccelerator_fast.a is missing"
-[ -f "$release/prebuilt/libintegrator_nee.a" ] || fail "prebuilt/libintegrator_nee.a is missing"
 # Code lines (not comments) of reference/ long enough to be distinctive, absent from the stubs and
 # not quoted on purpose by a handout. A single line can recur by coincidence (a test oracle does
 # the same thing); three in one file mean copied code.
@@ -58,7 +59,7 @@ echo "export test: no file of the release has 3 of the $checked distinctive refe
 
 # By function: no function of the release holds most of a function of the reference or of the
 # framework code a release ships compiled, whatever its names (tests/export/solution_scan.cpp).
-solution=("$root"/reference/*.cpp "$root"/framework/sealed/*.cpp "$root"/framework/accel/fast/*.cpp)
+mapfile -t solution < <(cut -d' ' -f2 "$manifest" | grep '\.cpp$' | sed "s|^|$root/|")
 mapfile -t release_sources < <(find "$release" -name '*.cpp' -o -name '*.h' | grep -v "/build/" | sort)
 "$scan" --solution "${solution[@]}" --release "${release_sources[@]}" >"$tmp/scan.log" ||
 	{ cat "$tmp/scan.log" >&2; fail "the release holds solution functions"; }

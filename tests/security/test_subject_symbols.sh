@@ -4,26 +4,26 @@
 #   - the fast accelerator (framework/accel/fast/: its own triangle and box tests and traversal)
 #     answers tasks 2 and 3: not in their subjects, which use the plain accelerator (task 3's
 #     BVH::hit);
-#   - the NEE integrator (framework/sealed/nee_integrator.cpp, an estimator of task 4's image)
+#   - the NEE integrator (framework/nee_integrator.cpp, an estimator of task 4's image)
 #     answers task 4: not in task 4's subjects, which link framework/no_nee_integrator.cpp.
-# (The area lights' sealed geometry and the light sampling task 6 calls compute no task's answer:
-# they are the API the tasks are written against.)
+# (The area lights' geometry and the light sampling task 6 calls, shipped compiled too, compute no
+# task's answer: they are the API the tasks are written against.)
 # Each object a program links leaves its source file's name in the program's symbol table (a FILE
 # symbol before its local symbols). For each task this lists the shipped-compiled sources (the
-# framework's sealed and fast code, the reference's other tasks) its subjects link, built both ways,
+# build's shipped_compiled.txt: the framework's and the reference's) its subjects link, built both ways,
 # by CMake (subject_taskN_student) and by the grading kit (grade-submission --link-only), and fails on
 # a source that can answer the task; the reference's subject, which links them all, proves that the
 # check sees them.
-#   test_subject_symbols.sh REPOSITORY_ROOT KIT SUBJECTS_DIR
+#   test_subject_symbols.sh REPOSITORY_ROOT KIT SUBJECTS_DIR SHIPPED_COMPILED_TXT
 set -euo pipefail
-root=$1 kit=$2 subjects=$3
+root=$1 kit=$2 subjects=$3 manifest=$4
 fail() { echo "subject symbols test: $*" >&2; exit 1; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
 fast_accelerator=(wide_bvh_build.cpp wide_bvh_traversal.cpp flat_meshes.cpp)
 nee_integrator=(nee_integrator.cpp)
-mapfile -t shipped_compiled < <(cd "$root" && ls framework/sealed/*.cpp framework/accel/fast/*.cpp reference/*.cpp | xargs -n1 basename)
+mapfile -t shipped_compiled < <(cut -d' ' -f2 "$manifest" | grep '\.cpp$' | xargs -n1 basename)
 
 # The source files whose objects PROGRAM links, one per line.
 sources_of() { readelf -sW "$1" | awk '$4 == "FILE" { print $8 }' | sort -u; }

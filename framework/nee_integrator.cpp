@@ -65,11 +65,11 @@ Spectrum shade_nee(const Pathtracer& pt, RNG& rng, const Ray& ray, const Trace& 
 
 // The radiance arriving along `ray`.
 Spectrum radiance_along(const Pathtracer& pt, RNG& rng, const Ray& ray, const Arrival& arrival) {
-	return traced(rng, ray, [&] {
-		Trace hit = observe<Closest_Hit>([&] { return pt.scene.hit(ray); }, ray);
-		return hit.hit ? shade_nee(pt, rng, ray, hit, arrival)
-		               : pt.scene.environment_radiance(ray.dir) * emission_weight(pt, arrival, ray, hit);
-	});
+	return trace_path_ray(
+		pt.scene, rng, ray, [&](const Trace& hit) { return shade_nee(pt, rng, ray, hit, arrival); },
+		[&](const Trace& miss) {
+			return pt.scene.environment_radiance(ray.dir) * emission_weight(pt, arrival, ray, miss);
+		});
 }
 
 class Nee_Integrator : public Path_Integrator {
