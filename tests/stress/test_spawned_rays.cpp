@@ -8,10 +8,10 @@
 // Measured with variants of the reference: new rays from the hit point with a fixed
 // dist_bounds.x = 1e-4 hit the Lambertian floor again 10 times in 10^4 at offset 10^2 and 3589 times
 // at 10^4 (the mirror and the glass floor: 2757 and 2235 times at 10^4); raising dist_bounds.x to
-// (1 + max |p_i|) * 64 * 2^-24 instead still lets 46 of the 4 * 10^4 rays from the Lambertian floor
-// (grazing directions) hit it again. Moving the origin that far off the surface, along the normal,
-// as the reference does, gives none with k = 8 or 64 (k = 4: 83, k = 2: 1497 on the Lambertian
-// floor; handout §4.2, §4.5).
+// spawn_ray's offset (1 + max |p_i|) * k * 2^-24 instead still lets 46 of the 4 * 10^4 rays from the
+// Lambertian floor (grazing directions) hit it again. Moving the origin that far off the surface,
+// along the normal, as spawn_ray does (spawn_ray.h), gives none with k = 8 or spawn_ray's k (k = 4:
+// 83, k = 2: 1497 on the Lambertian floor; handout §4.2, §4.5).
 #include "furnace_scenes.h"
 #include "lifecycle.h"
 #include "pathtracer.h"
