@@ -18,6 +18,17 @@
 
 namespace owen_sobol {
 
+// How RNG lays a pixel sample's draws over the dimensions (Sampler::sobol). Dimension 0 is the
+// camera's; the vertex a ray of depth d hits starts at dimension 1 + d * DIMENSIONS_PER_VERTEX
+// (RNG::begin_vertex), so that e.g. the first bounce's BSDF sample uses the same sequence in every
+// sample of a pixel, however many numbers the camera drew. A vertex that draws more than its share
+// continues into the next vertex's dimensions, which then start after it: a dimension is never used
+// twice in one sample. The first LOW_DISCREPANCY_DIMENSIONS draws (the camera's and the first
+// vertices') are low-discrepancy, the later ones independent (PCG32): the first bounces carry most
+// of an image's noise, and a scrambled point costs several times a PCG32 draw.
+constexpr uint32_t DIMENSIONS_PER_VERTEX = 8;
+constexpr uint32_t LOW_DISCREPANCY_DIMENSIONS = 1 + 4 * DIMENSIONS_PER_VERTEX;
+
 inline uint32_t reverse_bits(uint32_t x) {
 	x = __builtin_bswap32(x);
 	x = ((x & 0x0f0f0f0fu) << 4) | ((x >> 4) & 0x0f0f0f0fu);

@@ -52,12 +52,12 @@ RNG RNG::for_sample(uint64_t render_seed, uint64_t pixel_index, uint64_t sample_
 }
 
 void RNG::begin_vertex(uint32_t depth) {
-	uint64_t first = 1 + uint64_t(depth) * DIMENSIONS_PER_VERTEX; // dimension 0 is the camera's
-	dimension = std::max(dimension, uint32_t(std::min<uint64_t>(first, LOW_DISCREPANCY_DIMENSIONS)));
+	uint64_t first = 1 + uint64_t(depth) * owen_sobol::DIMENSIONS_PER_VERTEX; // dimension 0 is the camera's
+	dimension = std::max(dimension, uint32_t(std::min<uint64_t>(first, owen_sobol::LOW_DISCREPANCY_DIMENSIONS)));
 }
 
 bool RNG::draws_low_discrepancy() const {
-	return low_discrepancy && dimension < LOW_DISCREPANCY_DIMENSIONS;
+	return low_discrepancy && dimension < owen_sobol::LOW_DISCREPANCY_DIMENSIONS;
 }
 
 uint32_t RNG::next_low_discrepancy(bool two_d, uint32_t& y) {

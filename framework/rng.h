@@ -40,44 +40,13 @@ public:
 	// (*) Sampler::sobol: integer(n) is floor(u * n) of a 32-bit u (off uniform by at most 2^-32),
 	// and unit2() is one point of a 2D sequence: its two numbers are stratified together.
 
-	// Framework (Pathtracer::trace), Sampler::sobol only: the numbers drawn at the vertex a ray of
-	// `depth` hits start at that vertex's own dimension, so that e.g. the first bounce's BSDF
-	// sample uses the same sequence in every sample of a pixel, however many numbers the camera
-	// drew. A vertex that draws more than its share continues into the next vertex's dimensions,
-	// which then start after it: a dimension is never used twice in one sample.
+	// Framework: a path's ray of `depth` begins (Sampler::sobol: its draws start at their own
+	// dimensions, owen_sobol.h).
 	void begin_vertex(uint32_t depth);
 
-	// Sampler::sobol: the first LOW_DISCREPANCY_DIMENSIONS draws of a sample (the camera's and
-	// those of the first vertices) are low-discrepancy, the later ones independent (PCG32): the
-	// first bounces carry most of an image's noise, and a scrambled point costs several times a
-	// PCG32 draw.
-	static constexpr uint32_t DIMENSIONS_PER_VERTEX = 8;
-	static constexpr uint32_t LOW_DISCREPANCY_DIMENSIONS = 1 + 4 * DIMENSIONS_PER_VERTEX;
-
-	// The generator's exact state, so that a grader can hand its student's code (in another
-	// process, tests/judge/protocol.h) the very numbers it chose: the whole state, low-discrepancy
-	// sequence included.
-	struct State {
-		uint64_t state = 0, increment = 1;
-		bool low_discrepancy = false;
-		uint32_t reversed_index = 0, dimension = 0;
-		uint64_t pixel_key = 0;
-	};
-	State save() const {
-		return State{state, increment, low_discrepancy, reversed_index, dimension, pixel_key};
-	}
-	static RNG restore(State saved) {
-		RNG rng;
-		rng.state = saved.state;
-		rng.increment = saved.increment | 1u; // PCG's increment is odd
-		rng.low_discrepancy = saved.low_discrepancy;
-		rng.reversed_index = saved.reversed_index;
-		rng.dimension = saved.dimension;
-		rng.pixel_key = saved.pixel_key;
-		return rng;
-	}
-
 private:
+	friend struct RNG_State;
+
 	uint32_t pcg32();
 	bool draws_low_discrepancy() const;
 	uint32_t next_low_discrepancy(bool two_d, uint32_t& y); // the next dimension's point (x, and y if 2D)

@@ -25,7 +25,7 @@ public:
 	// Whether anything is hit with t in ray.dist_bounds; it may stop at the first hit found.
 	bool occluded(const BVH<Primitive>& bvh, const Ray& ray) const;
 
-	// Bytes of the accelerator's own data (the benchmark's memory count).
+	// Bytes of the accelerator's own data: its memory use.
 	size_t bytes() const;
 
 private:

@@ -114,7 +114,7 @@ TEST_CASE("Sampler::sobol: draws past the low-discrepancy dimensions are indepen
 	std::vector<size_t> cells;
 	for (uint64_t pixel = 0; pixel < 1000; pixel++) {
 		RNG rng = RNG::for_sample(4, pixel, 0, Sampler::sobol);
-		rng.begin_vertex(1000); // far past RNG::LOW_DISCREPANCY_DIMENSIONS
+		rng.begin_vertex(1000); // far past owen_sobol::LOW_DISCREPANCY_DIMENSIONS
 		for (int i = 0; i < 100; i++) cells.push_back(size_t(rng.unit() * 100.0f));
 	}
 	stats::Chi2_Result result = uniformity(cells, 100);
@@ -134,7 +134,7 @@ TEST_CASE("RNG::begin_vertex: a vertex's draws start at its own dimension, and n
 		for (uint32_t i = 0; i < at_vertex_1; i++) values.push_back(rng.integer());
 		return values;
 	};
-	const uint32_t per_vertex = RNG::DIMENSIONS_PER_VERTEX;
+	const uint32_t per_vertex = owen_sobol::DIMENSIONS_PER_VERTEX;
 	std::vector<uint32_t> few = draws(2, 1), all = draws(per_vertex, 1), more = draws(per_vertex + 2, 1);
 	CHECK(few.back() == all.back()); // vertex 1's first dimension either way
 	CHECK(more[per_vertex + 1] == all.back()); // vertex 0's extra draws take vertex 1's dimensions...

@@ -30,6 +30,7 @@
 #include "material.h"
 #include "pathtracer.h"
 #include "film.h"
+#include "rng_state.h"
 #include "scene.h"
 
 #include <cstdint>
@@ -51,9 +52,6 @@ enum class Kind : uint32_t {};
 const char* kind_name(Kind kind);
 // The student functions a request runs, in the handouts' words (for messages).
 const char* kind_functions(Kind kind);
-
-// A generator's exact state (rng.h), so the subject draws the numbers the judge chose.
-using RNG_State = RNG::State;
 
 // ---- Task 1 ----
 

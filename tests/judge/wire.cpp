@@ -42,7 +42,7 @@ void Writer::put(const std::string& s) {
 void Writer::put(View view) {
 	put(uint32_t(view));
 }
-void Writer::put(const RNG::State& rng) {
+void Writer::put(const RNG_State& rng) {
 	(*this)(rng.state, rng.increment, rng.low_discrepancy, rng.reversed_index, rng.dimension, rng.pixel_key);
 }
 void Writer::put(const Camera& camera) {
@@ -151,7 +151,7 @@ void Reader::get(View& view) {
 	if (n > uint32_t(View::direction)) throw Malformed("an unknown view " + std::to_string(n));
 	view = View(n);
 }
-void Reader::get(RNG::State& rng) {
+void Reader::get(RNG_State& rng) {
 	(*this)(rng.state, rng.increment, rng.low_discrepancy, rng.reversed_index, rng.dimension, rng.pixel_key);
 }
 void Reader::get(Camera& camera) {

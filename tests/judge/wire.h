@@ -67,7 +67,7 @@ private:
 	void put(const Mat4& m);
 	void put(const std::string& s);
 	void put(View view);
-	void put(const RNG::State& rng);
+	void put(const RNG_State& rng);
 	void put(const Camera& camera);
 	void put(const Render_Settings& settings);
 	void put(const Ray& ray);
@@ -149,7 +149,7 @@ private:
 	void get(Mat4& m);
 	void get(std::string& s);
 	void get(View& view);
-	void get(RNG::State& rng);
+	void get(RNG_State& rng);
 	void get(Camera& camera);
 	void get(Render_Settings& settings);
 	void get(Ray& ray);

@@ -18,7 +18,7 @@ Trace_Pixels::Answer answer(const Trace_Pixels& request) {
 	Pathtracer pathtracer(request.scene, request.settings, request.view);
 	Trace_Pixels::Answer colours;
 	for (const auto& s : request.samples) {
-		RNG rng = RNG::restore(s.rng);
+		RNG rng = s.rng.restored();
 		colours.push_back(pathtracer.trace_pixel(s.x, s.y, rng));
 	}
 	return colours;

@@ -75,7 +75,7 @@ std::vector<std::vector<Sample>> sample_pixels(const Scene& scene, const std::ve
 	uint64_t seed = request.settings.seed;
 	for (auto [x, y] : pixels) {
 		for (uint32_t s = 0; s < n; s++) {
-			request.samples.push_back({x, y, RNG::for_sample(seed, size_t(y) * WIDTH + x, s).save()});
+			request.samples.push_back({x, y, RNG_State::of(RNG::for_sample(seed, size_t(y) * WIDTH + x, s))});
 		}
 	}
 	std::vector<Spectrum> colours = judge::ask(request);

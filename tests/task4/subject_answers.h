@@ -8,7 +8,7 @@ namespace {
 using namespace protocol;
 
 BSDF_Scatter::Answer answer(const BSDF_Scatter& request) {
-	RNG rng = RNG::restore(request.rng);
+	RNG rng = request.rng.restored();
 	BSDF_Scatter::Answer samples;
 	for (Vec3 out_dir : request.out_dirs) samples.push_back(request.bsdf.scatter(rng, out_dir));
 	return samples;

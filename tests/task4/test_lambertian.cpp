@@ -155,7 +155,7 @@ TEST_CASE("Lambertian scatter: unit in_dir on out_dir's side, attenuation = eval
 	const Inputs in = inputs("Lambertian scatter");
 	const Spectrum albedo = in.albedo;
 	constexpr size_t SAMPLES = 10000; // per out_dir
-	BSDF_Scatter request{lambertian(albedo), {}, (in.seed ? RNG(in.seed) : RNG(4, 1)).save()};
+	BSDF_Scatter request{lambertian(albedo), {}, RNG_State::of(in.seed ? RNG(in.seed) : RNG(4, 1))};
 	for (Vec3 out : in.out_dirs) request.out_dirs.insert(request.out_dirs.end(), SAMPLES, out);
 	std::vector<Scatter> samples = judge::ask(request);
 	// The student's evaluate and pdf at the sampled directions.
@@ -236,7 +236,7 @@ TEST_CASE("Lambertian scatter: directions follow the cosine density |cos theta| 
 		size_t invalid = 0;
 		auto chunk_request = [&](size_t chunk) {
 			RNG rng(in.seed ? in.seed : 2024, k * chunks + chunk);
-			return BSDF_Scatter{lambertian(in.albedo), std::vector<Vec3>(samples / chunks, out), rng.save()};
+			return BSDF_Scatter{lambertian(in.albedo), std::vector<Vec3>(samples / chunks, out), RNG_State::of(rng)};
 		};
 		auto count = [&](size_t, const std::vector<Scatter>& scatters) {
 			for (const Scatter& s : scatters) {

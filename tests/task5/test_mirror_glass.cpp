@@ -43,7 +43,7 @@ bool same(Spectrum a, Spectrum b) {
 // `stream`), in that order.
 std::vector<Scatter> student_scatter(const BSDF& bsdf, const std::vector<Vec3>& out_dirs, size_t count, uint64_t seed,
                                      uint64_t stream = 0) {
-	BSDF_Scatter request{bsdf, {}, RNG(seed, stream).save()};
+	BSDF_Scatter request{bsdf, {}, RNG_State::of(RNG(seed, stream))};
 	for (Vec3 out : out_dirs) request.out_dirs.insert(request.out_dirs.end(), count, out);
 	return judge::ask(request);
 }

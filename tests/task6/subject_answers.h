@@ -9,7 +9,7 @@ using namespace protocol;
 
 Sample_Incoming::Answer answer(const Sample_Incoming& request) {
 	Pathtracer pathtracer(request.scene, request.settings);
-	RNG rng = RNG::restore(request.rng);
+	RNG rng = request.rng.restored();
 	Sample_Incoming::Answer samples;
 	for (const auto& q : request.queries) samples.push_back(pathtracer.sample_incoming(rng, q.hit, q.bsdf, q.out_dir));
 	return samples;

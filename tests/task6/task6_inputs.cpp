@@ -46,7 +46,7 @@ uint64_t sampling_seed(const std::string& what, uint64_t public_seed) {
 
 std::vector<Incoming_Sample> student_samples(const Scene& scene, const Trace& hit, const BSDF& bsdf, Vec3 out_dir,
                                              size_t n, uint64_t seed) {
-	protocol::Sample_Incoming request{scene, Render_Settings{}, {}, RNG(seed).save()};
+	protocol::Sample_Incoming request{scene, Render_Settings{}, {}, RNG_State::of(RNG(seed))};
 	request.queries.assign(n, protocol::Sample_Incoming::Query{hit, bsdf, out_dir});
 	return judge::ask(request);
 }

@@ -92,7 +92,7 @@ void check_estimate(const std::vector<double>& student_samples, const std::vecto
 // (trace_pixel with the student's sample_incoming) in one request.
 std::vector<Spectrum> render_samples(const Scene& scene, const Render_Settings& settings, size_t n) {
 	protocol::Trace_Pixels request{scene, settings, View::path, {}};
-	for (size_t i = 0; i < n; i++) request.samples.push_back({0, 0, RNG::for_sample(settings.seed, 0, i).save()});
+	for (size_t i = 0; i < n; i++) request.samples.push_back({0, 0, RNG_State::of(RNG::for_sample(settings.seed, 0, i))});
 	return judge::ask(request);
 }
 

@@ -16,7 +16,7 @@ std::vector<float> student_power_heuristic(const std::vector<Vec2>& pairs) {
 
 std::vector<double> student_direct_light(const Scene& scene, const Render_Settings& settings, const Trace& point,
                                          const BSDF& bsdf, Vec3 out_dir, size_t n, uint64_t seed) {
-	protocol::Estimate_Direct request{scene, settings, {}, RNG(seed).save()};
+	protocol::Estimate_Direct request{scene, settings, {}, RNG_State::of(RNG(seed))};
 	request.queries.assign(n, {point, bsdf, out_dir});
 	std::vector<double> values;
 	for (Spectrum s : judge::ask(request)) values.push_back(channel_average(s));
@@ -28,7 +28,7 @@ std::vector<double> student_pixel_samples(const Scene& scene, const Render_Setti
 		throw std::logic_error("the grader of task 6's extension renders with Integrator::nee");
 	protocol::Trace_Pixels request{scene, settings, View::path, {}};
 	for (size_t i = 0; i < n; i++)
-		request.samples.push_back({0, 0, RNG::for_sample(settings.seed, 0, i, settings.sampler).save()});
+		request.samples.push_back({0, 0, RNG_State::of(RNG::for_sample(settings.seed, 0, i, settings.sampler))});
 	std::vector<double> values;
 	for (Spectrum s : judge::ask(request)) values.push_back(channel_average(s));
 	return values;

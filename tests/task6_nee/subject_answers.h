@@ -15,7 +15,7 @@ Power_Heuristic::Answer answer(const Power_Heuristic& request) {
 
 Estimate_Direct::Answer answer(const Estimate_Direct& request) {
 	Pathtracer pathtracer(request.scene, request.settings);
-	RNG rng = RNG::restore(request.rng);
+	RNG rng = request.rng.restored();
 	Estimate_Direct::Answer light;
 	for (const auto& q : request.queries) light.push_back(pathtracer.estimate_direct(rng, q.hit, q.bsdf, q.out_dir));
 	return light;
