@@ -1,6 +1,6 @@
 #pragma once
 // A strategy of the run-time-against-error benchmarks (convergence, time-to-error): a name and a
-// list of the renderer's own flags (framework/cli_options.cpp), so that
+// list of the renderer's own flags (framework/cli/cli_options.cpp), so that
 // `pathtracer_reference SCENE FLAGS` renders exactly what the benchmark measures.
 #include "render.h"
 

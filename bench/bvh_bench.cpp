@@ -8,7 +8,7 @@
 #include "bench_rays.h"
 #include "bench_stats.h"
 #include "bench_timing.h"
-#include "accel/accelerator.h"
+#include "accelerator.h"
 #ifdef LAB_HAVE_EMBREE
 #include "embree_bvh.h"
 #endif

@@ -1,5 +1,5 @@
 #pragma once
-// The error of a render against a reference, as the graders measure it (framework/image_compare.h),
+// The error of a render against a reference, as the graders measure it (framework/film/image_compare.h),
 // and the straight-line fit of a convergence curve on log-log axes.
 #include "film.h"
 

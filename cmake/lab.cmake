@@ -34,19 +34,19 @@ set(LAB_PRECOMPILED_HEADERS pathtracer.h shapes.h bvh.h material.h env_light.h)
 
 # lab_student_object(<target> <source>): a student's task file, compiled for a quick verdict after
 # an edit (a plain object, no link-time optimization, the precompiled headers), where the compiler
-# sees only the system, the framework's headers and this file (tools/compile-student). A
+# sees only the system, the student's API (framework/api/) and this file (tools/compile-student). A
 # precompiled header stands for the headers it was made of, which the object's dependency file then
 # does not list: the object depends on it instead.
 function(lab_student_object target source)
 	add_library(${target} OBJECT ${source})
-	target_link_libraries(${target} PUBLIC framework_headers)
+	target_link_libraries(${target} PUBLIC framework_api)
 	lab_defaults(${target})
 	target_include_directories(${target} BEFORE PRIVATE ${LAB_PRECOMPILED_DIR})
 	list(TRANSFORM LAB_PRECOMPILED_HEADERS REPLACE "(.+)" "${LAB_PRECOMPILED_DIR}/\\1.gch" OUTPUT_VARIABLE precompiled)
 	set_property(SOURCE ${source} APPEND PROPERTY OBJECT_DEPENDS ${precompiled})
 	add_dependencies(${target} precompiled_headers)
 	set_property(TARGET ${target} PROPERTY CXX_COMPILER_LAUNCHER
-		${PROJECT_SOURCE_DIR}/tools/compile-student ${PROJECT_SOURCE_DIR}/framework --precompiled ${LAB_PRECOMPILED_DIR})
+		${PROJECT_SOURCE_DIR}/tools/compile-student ${PROJECT_SOURCE_DIR}/framework/api --precompiled ${LAB_PRECOMPILED_DIR})
 endfunction()
 
 # The seven task files. Each is compiled once per implementation (student/ and reference/) into an

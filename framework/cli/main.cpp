@@ -1,4 +1,4 @@
-// The renderer's program: pathtracer_reference / pathtracer_student (see framework/cli.h).
+// The renderer's program: pathtracer_reference / pathtracer_student (see framework/cli/cli.h).
 #include "cli.h"
 #include "terminal.h"
 

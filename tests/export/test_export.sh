@@ -26,7 +26,7 @@ release=$tmp/release
 # No reference source: no reference/ folder, and no line of reference code that the stubs lack.
 [ ! -e "$release/reference" ] || fail "the release has a reference/ folder"
 manifest=$tmp/objects/shipped_compiled.txt
-grep -q '^framework_sealed framework/lights.cpp$' "$manifest" && grep -q '^integrator_nee ' "$manifest" &&
+grep -q '^framework_sealed framework/scene/lights.cpp$' "$manifest" && grep -q '^integrator_nee ' "$manifest" &&
 	grep -q '^accelerator_fast framework/accel/fast/wide_bvh.h$' "$manifest" ||
 	fail "$manifest does not list the framework's shipped-compiled sources: this check would see nothing"
 while read -r library source; do
@@ -88,12 +88,12 @@ plant() { # FILE TEXT: a new copy of FILE with TEXT appended
 	mv "$planted/$1.new" "$planted/$1"
 }
 plant handouts/task1_camera.md 'See `framework/no_such_file.h`, §1.9, `./lab no-such-command` and `no_such_function(p)`.'
-plant framework/camera.h '// planted: the details are in bench/README.md'
+plant framework/api/camera.h '// planted: the details are in bench/README.md'
 "$references" "$planted" >"$tmp/planted_references.log" &&
 	fail "release_references passed a release with planted wrong references"
 for expected in "handouts/task1_camera.md:.*framework/no_such_file.h" "handouts/task1_camera.md:.*§1.9" \
 	"handouts/task1_camera.md:.*./lab no-such-command" "handouts/task1_camera.md:.*no_such_function()" \
-	"framework/camera.h:.*bench/README.md"; do
+	"framework/api/camera.h:.*bench/README.md"; do
 	grep -q "$expected" "$tmp/planted_references.log" ||
 		{ cat "$tmp/planted_references.log" >&2; fail "release_references did not report the planted reference '$expected'"; }
 done

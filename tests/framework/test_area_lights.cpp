@@ -1,4 +1,4 @@
-// Light sampling for task 6 (framework/lights.h, Pathtracer::sample_area_lights/area_lights_pdf):
+// Light sampling for task 6 (framework/api/lights.h, Pathtracer::sample_area_lights/area_lights_pdf):
 // the density is a density over directions (it integrates to 1), the sampler draws directions with
 // exactly that density (chi-square), and a light's directions cover its solid angle (E[1/pdf] =
 // Omega). Cases: a quad, a triangle mesh crossed twice by every ray (a tetrahedron), a sphere from

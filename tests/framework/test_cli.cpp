@@ -1,4 +1,4 @@
-// The renderer's command line (framework/cli.h) and its progress bar (framework/terminal.h):
+// The renderer's command line (framework/cli/cli.h) and its progress bar (framework/cli/terminal.h):
 // --help explains everything, bad input gives one "error:" line and writes nothing, a render
 // writes the images it reports.
 #include "cli.h"
@@ -325,7 +325,7 @@ TEST_CASE("cli: --width and --height give the camera the film's aspect ratio, ke
 	require_render({"wide.json", "--quiet", "--exr", "scene_wide.exr"});
 	require_render({"sphere.json", "--quiet", "--height", "30", "--exr", "cli_tall.exr"});
 	require_render({"tall.json", "--quiet", "--exr", "scene_tall.exr"});
-	INFO("--width/--height must set Camera::aspect_ratio (framework/cli_options.cpp, override_scene)");
+	INFO("--width/--height must set Camera::aspect_ratio (framework/cli/cli_options.cpp, override_scene)");
 	CHECK(read_image("cli_wide.exr").pixels == read_image("scene_wide.exr").pixels);
 	CHECK(read_image("cli_tall.exr").pixels == read_image("scene_tall.exr").pixels);
 }
@@ -351,7 +351,7 @@ TEST_CASE("cli: --no-light-sampling and --no-roulette turn the strategies off fo
 		scene.settings, parse_cli_options({"pathtracer", "sphere.json", "--no-light-sampling", "--no-roulette"}));
 	CHECK_FALSE(off.russian_roulette);
 	CHECK_FALSE(off.light_sampling);
-	INFO("--no-light-sampling must hide the lights from task 6: has_lights() false (framework/pathtracer.cpp)");
+	INFO("--no-light-sampling must hide the lights from task 6: has_lights() false (framework/render/pathtracer.cpp)");
 	CHECK_FALSE(Pathtracer(scene, off).has_lights());
 	require_render({"sphere.json", "--quiet", "--no-light-sampling", "--no-roulette"});
 }
@@ -499,7 +499,7 @@ TEST_CASE("cli: the debug views eye, normals, bvh and direction show the scene (
 	In_Temp_Dir here;
 	for (const char* view : {"eye", "normals", "bvh", "direction"}) {
 		INFO("--view " << view << " rendered a black image: check the reference tasks 1-3 and "
-		     "framework/pathtracer.cpp");
+		     "framework/render/pathtracer.cpp");
 		require_render({"sphere.json", "--quiet", "--view", view, "--exr", "view.exr"});
 		CHECK(any_nonzero(read_image("view.exr")));
 	}

@@ -1,4 +1,4 @@
-// A render split into passes (render.h: Render_Options::pass, framework/film_file.h): the passes
+// A render split into passes (render.h: Render_Options::pass, framework/film/film_file.h): the passes
 // draw every sample of the whole render exactly once, their film files keep each pixel's statistics
 // exactly, and merging them gives the single render's film up to the order of its sums, within the
 // bound below. Bad sets of passes are refused with the file named.

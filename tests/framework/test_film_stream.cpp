@@ -1,4 +1,4 @@
-// The film stream (framework/film_stream.h): what a renderer started with --stream writes after
+// The film stream (framework/film/film_stream.h): what a renderer started with --stream writes after
 // each batch of samples, and ./lab view reads.
 #include "film.h"
 #include "film_stream.h"

@@ -121,7 +121,7 @@ quoted() {
 quoted handouts/task1_camera.md 'in double precision\) within @' tests/task1/camera_check.h 'DIRECTION_TOLERANCE = @;'
 quoted handouts/task1_camera.md '@ samples each of three pixels' tests/task1/test_trace_pixel.cpp 'constexpr uint32_t N = @;'
 quoted handouts/task1_camera.md 'uniformity over @ × ' tests/task1/test_trace_pixel.cpp 'constexpr int CELLS = @;'
-quoted handouts/task1_camera.md 'Both share a @ chance' framework/image_compare.h 'IMAGE_ALPHA = @;'
+quoted handouts/task1_camera.md 'Both share a @ chance' framework/film/image_compare.h 'IMAGE_ALPHA = @;'
 
 # Task 2: the barycentric slack, what the grader allows, its rounding bound and its rays.
 quoted handouts/task2_shapes.md '`ε = @`' reference/task2_shapes.cpp 'EDGE_SLACK = @;'
@@ -135,17 +135,17 @@ quoted handouts/task3_bvh.md '`B = @` buckets' reference/task3_bvh.cpp 'constexp
 quoted handouts/task3_bvh.md 'binned-SAH tree \(@ buckets' reference/task3_bvh.cpp 'constexpr int BUCKETS = @;'
 quoted handouts/task3_bvh.md 'at most \*\*@ ×\*\* that of' tests/task3/bvh_quality_test.cpp 'MAX_SAH_RATIO = @;'
 quoted handouts/task3_bvh.md 'at most \*\*@ ×\*\* those of' tests/task3/bvh_quality_test.cpp 'MAX_TESTS_RATIO = @;'
-quoted handouts/task3_bvh.md 'white \(@ or more\)' framework/pathtracer.cpp 'heat\(nodes / @\)'
+quoted handouts/task3_bvh.md 'white \(@ or more\)' framework/render/pathtracer.cpp 'heat\(nodes / @\)'
 
 # Task 4: the ray offset (1 + max |p_i|) k 2^-24 of spawn_ray (every ray a path spawns), the depth
 # where roulette starts in the reference and the NEE integrator, the graders' float allowance and
 # samples, the stress suite's significance.
-quoted handouts/task4_path.md 'the framework uses k = @' framework/spawn_ray.h 'RAY_EPSILON = @ \* 0x'
-quoted handouts/task4_path.md '^their own floor again, with k = 4, 83\); @ keeps' framework/spawn_ray.h 'RAY_EPSILON = @ \* 0x'
-quoted handouts/task4_path.md 'the offset of §4.2 \(k = @\) only' framework/spawn_ray.h 'RAY_EPSILON = @ \* 0x'
-quoted handouts/task4_path.md '\) · k · @$' framework/spawn_ray.h 'RAY_EPSILON = [0-9.]+f \* @;'
+quoted handouts/task4_path.md 'the framework uses k = @' framework/api/spawn_ray.h 'RAY_EPSILON = @ \* 0x'
+quoted handouts/task4_path.md '^their own floor again, with k = 4, 83\); @ keeps' framework/api/spawn_ray.h 'RAY_EPSILON = @ \* 0x'
+quoted handouts/task4_path.md 'the offset of §4.2 \(k = @\) only' framework/api/spawn_ray.h 'RAY_EPSILON = @ \* 0x'
+quoted handouts/task4_path.md '\) · k · @$' framework/api/spawn_ray.h 'RAY_EPSILON = [0-9.]+f \* @;'
 quoted handouts/task4_path.md '`ray.depth >= @`' reference/task4_path.cpp 'ROULETTE_DEPTH = @;'
-quoted handouts/task4_path.md '`ray.depth >= @`' framework/nee_integrator.cpp 'ROULETTE_DEPTH = @;'
+quoted handouts/task4_path.md '`ray.depth >= @`' framework/render/nee_integrator.cpp 'ROULETTE_DEPTH = @;'
 quoted handouts/task4_path.md 'allowance of @ \(relative\)' tests/support/film_statistics.h 'FLOAT_SLACK = @;'
 quoted handouts/task4_path.md '\| @ samples for 5 `out_dir`s' tests/task4/test_lambertian.cpp 'samples = @, chunks'
 quoted handouts/task4_path.md 'Šidák over 48 tests at @\)' tests/stress/test_translated_cornell_box.cpp 'sidak\(@, tests\)'
@@ -159,7 +159,7 @@ quoted handouts/task5_materials.md '\| @ samples at each of' tests/task5/test_mi
 
 # Task 6: the shadow ray's end, the mixture's pdf tolerance and samples, the noise batches, the
 # graders' significance and number of checks (task 6 and its NEE extension).
-quoted handouts/task6_direct_lighting.md '`SHADOW_RAY_END` = 1 − @\)' framework/pathtracer.h 'SHADOW_RAY_END = 1.0f - @;'
+quoted handouts/task6_direct_lighting.md '`SHADOW_RAY_END` = 1 − @\)' framework/api/pathtracer.h 'SHADOW_RAY_END = 1.0f - @;'
 quoted handouts/task6_direct_lighting.md 'returned direction to @ \(relative\)' tests/task6/test_sample_incoming.cpp 'abs\(s.pdf - expected\) <= @ \* expected'
 quoted handouts/task6_direct_lighting.md '\| @ samples on a tilted surface' tests/task6/test_sample_incoming.cpp 'samples_at\(scene, lit, @, sampling_seed\("mixture density, square"'
 quoted handouts/task6_direct_lighting.md 'cut into @ batches' tests/support/sample_moments.h 'NOISE_BATCHES = @;'

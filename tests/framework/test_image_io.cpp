@@ -1,4 +1,4 @@
-// Image files (framework/image_io.h): EXR keeps linear floats exactly, PNG applies exposure and the
+// Image files (framework/film/image_io.h): EXR keeps linear floats exactly, PNG applies exposure and the
 // sRGB curve, .hdr files can be read, and every failure names the file.
 #include "error.h"
 #include "image_io.h"

@@ -1,5 +1,5 @@
 // Every estimator of the renderer estimates the same image, on every shipped scene (image z-tests,
-// framework/image_compare.h): next-event estimation with MIS (--integrator nee), lights chosen
+// framework/film/image_compare.h): next-event estimation with MIS (--integrator nee), lights chosen
 // by power (--light-choice power) and low-discrepancy samples (--sampler sobol) against the lab's
 // estimator (task 4 with task 6's mixture, lights chosen uniformly, independent samples).
 //

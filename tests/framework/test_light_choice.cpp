@@ -1,4 +1,4 @@
-// Which light a light sample aims at (framework/light_distribution.h): by power, each light in
+// Which light a light sample aims at (framework/api/light_distribution.h): by power, each light in
 // proportion to the power it emits (chi-square on the choices), with the same probabilities in
 // every density that counts the choice (area_lights_pdf, sample_light, the NEE integrator's weight
 // of a light found by a BSDF sample). That the choice changes only the noise, not the image, is

@@ -1,4 +1,4 @@
-// The low-discrepancy numbers of Sampler::sobol (framework/rng.h, owen_sobol.h): the samples of a
+// The low-discrepancy numbers of Sampler::sobol (framework/api/rng.h, owen_sobol.h): the samples of a
 // pixel are stratified (the first 2^k of them are a (0,k,2)-net in every 2D draw and one point per
 // interval of 1/2^k in every 1D draw), each sample is uniform over the pixels (so that estimators
 // stay unbiased), and a path's vertices draw from dimensions of their own, never one twice.

@@ -1,4 +1,4 @@
-// load_obj (framework/obj_loader.h): triangles from Wavefront OBJ files via tinyobjloader. Normals
+// load_obj (framework/scene/obj_loader.h): triangles from Wavefront OBJ files via tinyobjloader. Normals
 // come from the file or are computed (area-weighted); degenerate faces are kept; a file that is
 // missing, has no triangles or refers to vertices it does not define is an Input_Error naming it.
 #include "error.h"

@@ -1,4 +1,4 @@
-// Radiance .hdr images (framework/radiance_hdr.h): good files decode exactly, and a truncated or
+// Radiance .hdr images (framework/film/radiance_hdr.h): good files decode exactly, and a truncated or
 // corrupt file is an error that names the file and what is wrong, at once (never a hang, never
 // black rows).
 #include "error.h"

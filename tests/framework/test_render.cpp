@@ -1,4 +1,4 @@
-// Rendering (framework/render.h) and the film (framework/film.h): a render is a pure function of
+// Rendering (framework/render/render.h) and the film (framework/film/film.h): a render is a pure function of
 // (scene, settings, seed), whatever the threads and tile order; pixels keep an exact mean and
 // variance; non-finite samples are counted, never averaged.
 #include "progressive_render.h"

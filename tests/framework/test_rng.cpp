@@ -1,4 +1,4 @@
-// The random number generator (framework/rng.h): ranges, independence of the per-sample streams,
+// The random number generator (framework/api/rng.h): ranges, independence of the per-sample streams,
 // and uniformity.
 #include "rng.h"
 #include "statistics.h"
@@ -39,7 +39,7 @@ TEST_CASE("RNG::unit is in [0, 1) on a grid of 2^-24: its largest value is 1 - 2
 		bool on_grid = u * 0x1p24f == std::floor(u * 0x1p24f); // a multiple of 2^-24
 		if (u >= 0.0f && u < 1.0f && on_grid) continue;
 		INFO("draw " << i << ": unit() = " << u);
-		FAIL("unit() must return one of the values k * 2^-24, k = 0 .. 2^24 - 1 (framework/rng.cpp)");
+		FAIL("unit() must return one of the values k * 2^-24, k = 0 .. 2^24 - 1 (framework/render/rng.cpp)");
 	}
 	// The top 24 output bits are all ones for about one generator in 2^24: search the first draw
 	// of successive seeds for a few such cases. A conversion that rounds (e.g. float(x) * 2^-32)
@@ -64,7 +64,7 @@ TEST_CASE("RNG::integer(n) is in [0, n) and has no modulo bias") {
 			uint32_t k = rng.integer(n);
 			if (k < n) continue;
 			INFO("integer(" << n << ") returned " << k);
-			FAIL("integer(n) must be below n (framework/rng.cpp)");
+			FAIL("integer(n) must be below n (framework/render/rng.cpp)");
 		}
 	}
 	// With n = 3 * 2^30, a plain integer() % n returns [0, 2^30) twice as often as the rest:

@@ -1,4 +1,4 @@
-// load_scene (framework/scene_loader.h) and the scene format of scenes/README.md: the shipped
+// load_scene (framework/scene/scene_loader.h) and the scene format of scenes/README.md: the shipped
 // scenes load as documented, every part of the format means what the README says, and every bad
 // input is ONE Input_Error "<file>: <element>: <what was expected, and what was found>" — never a
 // crash and never a silently ignored value.

@@ -33,7 +33,7 @@ with_helper() {
 }
 
 compile() {
-	"$cxx" -std=c++17 -O0 -w -I "$root/framework" -c "$1" -o "$2" 2>"$2.log" ||
+	"$cxx" -std=c++17 -O0 -w -I "$root/framework/api" -c "$1" -o "$2" 2>"$2.log" ||
 		{ cat "$2.log" >&2; fail "$(basename "$1") does not compile with a helper inserted"; }
 }
 

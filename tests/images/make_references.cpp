@@ -11,7 +11,7 @@
 //                                               merge the N passes in DIR into the references
 //
 // A reference made from N passes is the one rendered whole, up to the order of the sums (the passes
-// draw every sample once, framework/film_file.h). Every reference written is then checked against
+// draw every sample once, framework/film/film_file.h). Every reference written is then checked against
 // OUTLIER_RENDERS renders of the reference with the graders' settings and seeds of their own, whose
 // outlier pixels its record keeps (image_compare.h: how many a correct render has). Every run that
 // writes a reference ends by recording the SHA-256 of every graded scene and reference file

@@ -1,6 +1,6 @@
 // The stored references (scenes/graded/references/) must still be what the reference renderer
 // produces: each graded scene, rendered by the reference at the graders' samples and seed, passes
-// the image comparison (framework/image_compare.h). If this fails after a change to reference/
+// the image comparison (framework/film/image_compare.h). If this fails after a change to reference/
 // or a graded scene, the change is biased or the references are stale: `./lab references`.
 #include "graded_images.h"
 

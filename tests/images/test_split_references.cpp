@@ -1,6 +1,6 @@
 // A reference split over machines (./lab references --pass P/N, then --merge): the passes, merged
 // from their film files, are the stored reference rendered whole, up to the order of the sums
-// (framework/film_file.h). Checked on eye_bunny, the cheapest graded scene, in three passes.
+// (framework/film/film_file.h). Checked on eye_bunny, the cheapest graded scene, in three passes.
 #include "film_file.h"
 #include "graded_images.h"
 #include "image_io.h"

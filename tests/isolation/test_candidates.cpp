@@ -1,5 +1,5 @@
 // The framework's fast accelerator runs only where tasks 2 and 3 are both the reference
-// (framework/accel/accelerator.h, lab_link_tasks in cmake/lab.cmake): a program that links another
+// (framework/api/accelerator.h, lab_link_tasks in cmake/lab.cmake): a program that links another
 // task 2, as the task-2 grader links a student's, has its Triangle::hit decide every candidate
 // triangle of the BVH, not only the closest one. This program links the counting task 2
 // (counting_task2_shapes.cpp) through lab_link_tasks and renders the task-2 graded scene.

@@ -1,7 +1,7 @@
 // Task 1 grader, reference image: the eye view (albedo * |cos| at the first hit) of a bunny, a
 // sphere and a floor, 16 jittered samples per pixel.
 // The render is compared with the stored reference pixel by pixel, by a z-test that knows the noise
-// of both (framework/image_compare.h); scenes/graded/references/ holds the reference.
+// of both (framework/film/image_compare.h); scenes/graded/references/ holds the reference.
 #include "student_renders.h"
 
 #include <catch2/catch.hpp>

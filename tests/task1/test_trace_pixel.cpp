@@ -1,6 +1,6 @@
 // Task 1, handout §1.3: Pathtracer::trace_pixel, one supersampling sample per call. In the
 // View::direction debug view, trace() returns the colour 0.5 (d + 1) of the camera ray's
-// direction d (framework/pathtracer.cpp), so the grader can recover the film point of every
+// direction d (framework/render/pathtracer.cpp), so the grader can recover the film point of every
 // sample from the reference camera's film plane (camera_check.h) and look at where in the pixel it
 // fell.
 #include "camera_check.h"
@@ -68,7 +68,7 @@ struct Sample {
 
 using Pixel = std::pair<uint32_t, uint32_t>;
 
-// Samples 0 .. n - 1 of each pixel, seeded as the renderer seeds them (framework/render.cpp), from
+// Samples 0 .. n - 1 of each pixel, seeded as the renderer seeds them (framework/render/render.cpp), from
 // the student's trace_pixel in one request.
 std::vector<std::vector<Sample>> sample_pixels(const Scene& scene, const std::vector<Pixel>& pixels, uint32_t n) {
 	Trace_Pixels request{scene, film_settings(), View::direction, {}};

@@ -1,6 +1,6 @@
 // Task 3 grader, reference image: the eye view of the graded bunny scene (3 674 triangles) rendered
 // through the student's BVH. A BVH changes only the speed, never the picture, so the image must match
-// the reference (framework/image_compare.h), and the bunny's BVH must be a real hierarchy: the
+// the reference (framework/film/image_compare.h), and the bunny's BVH must be a real hierarchy: the
 // starter code's single leaf is correct, but it is not the task.
 #include "graded_images.h"
 #include "judge.h"

@@ -1,4 +1,4 @@
-// Task 4, handout §4.1: the Lambertian BSDF (BSDF_Lambertian in framework/material.h).
+// Task 4, handout §4.1: the Lambertian BSDF (BSDF_Lambertian in framework/api/material.h).
 // Local frame: the normal is +y, out_dir and in_dir both point away from the surface. The BSDF is
 // two-sided: it reflects on whichever side out_dir lies.
 //

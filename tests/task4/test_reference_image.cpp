@@ -1,7 +1,7 @@
 // Task 4 grader, reference image: the diffuse Cornell box, path traced, 64 samples per pixel, at
 // most 5 bounces.
 // The render is compared with the stored reference pixel by pixel, by a z-test that knows the noise
-// of both (framework/image_compare.h); scenes/graded/references/ holds the reference.
+// of both (framework/film/image_compare.h); scenes/graded/references/ holds the reference.
 #include "student_renders.h"
 
 #include <catch2/catch.hpp>

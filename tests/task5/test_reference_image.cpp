@@ -2,7 +2,7 @@
 // path traced, 64 samples per pixel. Near the glass ball's rim Fresnel reflection shows the sky and
 // refraction the ground.
 // The render is compared with the stored reference pixel by pixel, by a z-test that knows the noise
-// of both (framework/image_compare.h); scenes/graded/references/ holds the reference.
+// of both (framework/film/image_compare.h); scenes/graded/references/ holds the reference.
 #include "student_renders.h"
 
 #include <catch2/catch.hpp>

@@ -1,7 +1,7 @@
 // Task 6 grader, reference image: the Cornell box with two spheres and a small, bright light, path
 // traced with the mixture of BSDF and light sampling.
 // The render is compared with the stored reference pixel by pixel, by a z-test that knows the noise
-// of both (framework/image_compare.h); scenes/graded/references/ holds the reference.
+// of both (framework/film/image_compare.h); scenes/graded/references/ holds the reference.
 #include "grader_significance.h"
 #include "student_renders.h"
 

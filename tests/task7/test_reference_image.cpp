@@ -1,7 +1,7 @@
 // Task 7 grader, reference image: a diffuse sphere on a floor under an overcast HDR sky, with
 // environment importance sampling.
 // The render is compared with the stored reference pixel by pixel, by a z-test that knows the noise
-// of both (framework/image_compare.h); scenes/graded/references/ holds the reference.
+// of both (framework/film/image_compare.h); scenes/graded/references/ holds the reference.
 #include "student_renders.h"
 
 #include <catch2/catch.hpp>

@@ -1,6 +1,6 @@
-// The fast accelerator (accel/accelerator.h): the queries of a finished BVH traverse its Wide_BVH
+// The fast accelerator (api/accelerator.h): the queries of a finished BVH traverse its Wide_BVH
 // (wide_bvh.h). Linked only where tasks 2 and 3 are both the reference (cmake/lab.cmake).
-#include "accel/accelerator.h"
+#include "accelerator.h"
 #include "four_wide_tests.h"
 #include "instance.h"
 #include "tri_mesh.h"

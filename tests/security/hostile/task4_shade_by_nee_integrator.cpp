@@ -1,6 +1,6 @@
 // Hostile: task 4's estimator left to the framework. The Lambertian BSDF is done honestly (cosine
 // sampling, f = albedo / pi); shade() returns the NEE integrator's estimate of the same radiance
-// (framework/nee_integrator.h, public), after switching the render to that integrator should the
+// (framework/render/nee_integrator.h, public), after switching the render to that integrator should the
 // framework look at its settings.
 #include "material.h"
 #include "nee_integrator.h"

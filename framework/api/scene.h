@@ -70,7 +70,7 @@ struct Scene {
 	std::vector<std::string> material_names;
 	std::vector<Instance> objects; // moved into `bvh` by commit()
 	BVH<Instance> bvh;
-	Accelerator<Instance> accelerator; // made from bvh by commit() (accel/accelerator.h)
+	Accelerator<Instance> accelerator; // made from bvh by commit() (accelerator.h)
 	std::optional<Environment> environment;
 	Area_Lights area_lights; // built by commit()
 };

@@ -170,7 +170,7 @@ const std::vector<Option>& option_table() {
 		 [](auto& o, auto& name, auto& v) { o.follow_brightest = whole_number<uint32_t>(name, v, 1, 1000); }},
 		{"--stream", nullptr,
 		 "for ./lab view: render progressively up to --spp samples, writing the film to standard output "
-		 "after each batch of samples (binary: framework/film_stream.h); writes no image",
+		 "after each batch of samples (binary: framework/film/film_stream.h); writes no image",
 		 [](auto& o, auto&, auto&) { o.stream = true; }},
 		{"--no-light-sampling", nullptr,
 		 "sample the BSDF only: task 6 sees no lights (has_lights() is false); same image, other noise",

@@ -1,5 +1,5 @@
 #pragma once
-#include "accel/accelerator.h"
+#include "accelerator.h"
 #include "bvh.h"
 #include "trace.h"
 
@@ -30,7 +30,7 @@ struct Triangle {
 };
 
 // A triangle mesh with its own BVH, queried through the framework's accelerator (which is
-// BVH::hit unless tasks 2 and 3 are both the reference: accel/accelerator.h).
+// BVH::hit unless tasks 2 and 3 are both the reference: accelerator.h).
 class Tri_Mesh {
 public:
 	Tri_Mesh() = default;
