@@ -1,9 +1,10 @@
 #pragma once
-// Which light a light sample aims at (Pathtracer::sample_area_lights). Lights 0 .. n - 1 are the
-// scene's area lights, light n its environment, if it has one. Light_Choice::uniform takes each
-// equally often; Light_Choice::power mostly in proportion to the power it emits, so that a bright
-// lamp gets more samples than a dim one (pbrt-v4's PowerLightSampler). Either way the light pdf
-// divides by the probability of the light chosen, so both estimate the same image.
+// Which light a light sample aims at (Pathtracer::sample_area_lights, sample_light). Lights 0 .. n - 1
+// are the scene's area lights, light n its environment, if it has one. Light_Choice::uniform takes
+// each equally often; Light_Choice::power mostly in proportion to the power it emits, so that a
+// bright lamp gets more samples than a dim one (pbrt-v4's PowerLightSampler); Light_Choice::tree by
+// how much light each may send to the point being shaded (light_tree.h). Whichever way, the light
+// pdf divides by the probability of the light chosen, so all estimate the same image.
 //
 // Power says how much light a light sends into the scene, not how much reaches a given point: the
 // sky of a scene with a 40 x 40 ground has 38 times the power of scenes/dragon.json's lamp, which
@@ -11,6 +12,12 @@
 // and its pixels 18 times the variance of uniform choice. So a share UNIFORM_SHARE of the
 // probability is spread evenly (a defensive mixture, Hesterberg 1995): no light is chosen less than
 // half as often as uniform choice would, which bounds the loss to a factor of 2.
+//
+// The tree holds the area lights only: an environment has neither a position nor a direction it
+// faces. As pbrt-v4's BVHLightSampler does, the environment and the tree are each chosen half the
+// time (the environment always if there are no area lights), and the tree then chooses among the
+// area lights.
+#include "light_tree.h"
 #include "scene.h"
 
 #include <vector>
@@ -34,15 +41,23 @@ public:
 	// probability() always agree.
 	Light_Distribution(const Scene& scene, Light_Choice choice);
 
-	// Light i with probability(i).
-	size_t choose(RNG& rng) const;
-	float probability(size_t i) const;
+	// A light chosen for the point `from` with one number of `rng`, and its probability: exactly
+	// probability(light, from).
+	struct Choice {
+		size_t light;
+		float probability;
+	};
+	Choice choose(RNG& rng, Vec3 from) const;
+	float probability(size_t i, Vec3 from) const;
 
 private:
 	bool uniform() const; // by choice, or because the scene's lights changed
+	float environment_share() const; // Light_Choice::tree: 0, 1/2 or 1 (above)
 
 	const Scene& scene;
-	bool by_power = false;
-	std::vector<float> probabilities;
-	std::vector<float> cdf; // running sum of the probabilities, the last exactly 1
+	Light_Choice choice = Light_Choice::uniform; // uniform if the powers cannot be used
+	size_t lights_when_made = 0;
+	std::vector<float> probabilities; // by power
+	std::vector<float> cdf;           // running sum of the probabilities, the last exactly 1
+	Light_Tree tree;
 };

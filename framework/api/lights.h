@@ -55,6 +55,10 @@ public:
 	uint32_t material(size_t i) const {
 		return lights[i].material;
 	}
+	// Light i's shape, for the light tree's bounds (light_bounds.h).
+	const Area_Light& light(size_t i) const {
+		return lights[i];
+	}
 
 private:
 	std::vector<Area_Light> lights;

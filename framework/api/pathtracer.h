@@ -97,7 +97,7 @@ public:
 	const Scene& scene;
 	Render_Settings settings; // image size, samples, max_depth, seed
 	View view = View::path;
-	Light_Distribution light_distribution; // which light sample_area_lights aims at
+	Light_Distribution light_distribution; // which light sample_area_lights and sample_light aim at
 
 private:
 	Spectrum debug_view(const Ray& ray) const;

@@ -21,6 +21,7 @@ enum class Integrator {
 enum class Light_Choice {
 	uniform, // every light equally often
 	power,   // in proportion to the power each light emits
+	tree,    // in proportion to the light each may send to the shading point (light_tree.h)
 };
 
 struct Render_Settings {
@@ -38,7 +39,8 @@ struct Render_Settings {
 	bool russian_roulette = true; // false: task 4 never cuts a path before max_depth
 	// Estimators of the same image. These defaults are what the graders' statistics
 	// assume (independent samples, the lab's estimator); the renderer's command line defaults to
-	// Sampler::sobol, and pathtracer_reference to Integrator::nee.
+	// Sampler::sobol, pathtracer_reference to Integrator::nee, and Integrator::nee to
+	// Light_Choice::tree (override_settings, cli_options.h).
 	Sampler sampler = Sampler::independent;
 	Integrator integrator = Integrator::mixture;
 	Light_Choice light_choice = Light_Choice::power;

@@ -27,7 +27,7 @@ struct Cli_Options {
 	std::optional<bool> env_importance_sampling; // unset: as the scene says
 	Sampler sampler = Sampler::sobol;             // renders default to low-discrepancy samples
 	std::optional<Integrator> integrator;        // unset: the program's default (run_cli)
-	std::optional<Light_Choice> light_choice;    // unset: the settings' (by power)
+	std::optional<Light_Choice> light_choice;    // unset: tree for NEE, else the settings' (power)
 	// --follow-pixel X,Y: print the life of that pixel's rays instead of rendering an image.
 	std::optional<std::pair<uint32_t, uint32_t>> follow_pixel;
 	uint32_t follow_samples = 1;

@@ -85,12 +85,12 @@ float light_pdf(const Pathtracer& pt, const Ray& ray, const Trace& hit) {
 	const Scene& scene = pt.scene;
 	if (!hit.hit) {
 		if (!scene.environment) return 0.0f;
-		float chosen = pt.light_distribution.probability(scene.area_lights.count());
+		float chosen = pt.light_distribution.probability(scene.area_lights.count(), ray.point);
 		return chosen * std::visit([&](const auto& env) { return env.pdf(ray.dir); }, *scene.environment);
 	}
 	int light = scene.area_lights.light_of(hit.object);
 	if (light < 0) return 0.0f;
-	return pt.light_distribution.probability(size_t(light)) *
+	return pt.light_distribution.probability(size_t(light), ray.point) *
 	       scene.area_lights.point_pdf(size_t(light), ray.point, hit.position, hit.normal);
 }
 

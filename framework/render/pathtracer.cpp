@@ -98,7 +98,7 @@ Vec3 Pathtracer::sample_area_lights(RNG& rng, Vec3 from) const {
 	require_lights(*this, "sample_area_lights");
 	return observe<Light_Sampled>(
 		[&] {
-			uint32_t i = uint32_t(light_distribution.choose(rng));
+			uint32_t i = uint32_t(light_distribution.choose(rng, from).light);
 			if (i < scene.area_lights.count()) return Chosen_Light{scene.area_lights.sample(i, rng, from), i, false};
 			Vec2 u = rng.unit2();
 			return Chosen_Light{std::visit([&](const auto& env) { return env.sample(u); }, *scene.environment), i, true};
@@ -111,8 +111,7 @@ Vec3 Pathtracer::sample_area_lights(RNG& rng, Vec3 from) const {
 // sampled point is, what it emits towards `from`, and the density of choosing it.
 Light_Sample Pathtracer::sample_light(RNG& rng, Vec3 from) const {
 	require_lights(*this, "sample_light");
-	size_t i = light_distribution.choose(rng);
-	float chosen = light_distribution.probability(i);
+	auto [i, chosen] = light_distribution.choose(rng, from);
 	Light_Sample sample;
 	if (i < scene.area_lights.count()) {
 		Area_Lights::Point point = scene.area_lights.sample_point(i, rng);
@@ -137,12 +136,13 @@ float Pathtracer::area_lights_pdf(Vec3 from, Vec3 dir) const {
 		[&] {
 			float pdf = 0.0f;
 			size_t area_lights = scene.area_lights.count();
+			// A light's probability is asked only where its density is not 0: the tree's costs a walk.
 			for (size_t i = 0; i < area_lights; i++) {
-				float p = light_distribution.probability(i);
-				if (p > 0.0f) pdf += p * scene.area_lights.pdf(i, from, dir);
+				float density = scene.area_lights.pdf(i, from, dir);
+				if (density > 0.0f) pdf += light_distribution.probability(i, from) * density;
 			}
 			if (scene.environment) {
-				float p = light_distribution.probability(area_lights);
+				float p = light_distribution.probability(area_lights, from);
 				if (p > 0.0f) pdf += p * std::visit([&](const auto& env) { return env.pdf(dir); }, *scene.environment);
 			}
 			return pdf;

@@ -41,13 +41,19 @@ size_t light_count(const Scene& scene) {
 	return scene.area_lights.count() + (scene.environment ? 1 : 0);
 }
 
-Light_Distribution::Light_Distribution(const Scene& scene_, Light_Choice choice) : scene(scene_) {
-	if (choice != Light_Choice::power) return;
+Light_Distribution::Light_Distribution(const Scene& scene_, Light_Choice choice_)
+	: scene(scene_), lights_when_made(light_count(scene_)) {
+	if (choice_ == Light_Choice::uniform) return;
 	std::vector<double> powers = light_powers(scene);
 	double total = std::accumulate(powers.begin(), powers.end(), 0.0);
-	by_power = total > 0.0 && std::isfinite(total) &&
-	           std::all_of(powers.begin(), powers.end(), [](double p) { return p >= 0.0; });
-	if (!by_power) return;
+	bool usable = total > 0.0 && std::isfinite(total) &&
+	              std::all_of(powers.begin(), powers.end(), [](double p) { return p >= 0.0; });
+	if (!usable) return;
+	choice = choice_;
+	if (choice == Light_Choice::tree) {
+		tree = Light_Tree(scene.area_lights, powers);
+		return;
+	}
 	double sum = 0.0, uniform = 1.0 / double(powers.size());
 	for (double power : powers) {
 		double p = (1.0 - UNIFORM_SHARE) * power / total + UNIFORM_SHARE * uniform;
@@ -59,15 +65,35 @@ Light_Distribution::Light_Distribution(const Scene& scene_, Light_Choice choice)
 }
 
 bool Light_Distribution::uniform() const {
-	return !by_power || probabilities.size() != light_count(scene);
+	return choice == Light_Choice::uniform || light_count(scene) != lights_when_made;
 }
 
-size_t Light_Distribution::choose(RNG& rng) const {
-	if (uniform()) return rng.integer(uint32_t(light_count(scene)));
-	size_t i = size_t(std::upper_bound(cdf.begin(), cdf.end(), rng.unit()) - cdf.begin());
-	return std::min(i, cdf.size() - 1);
+float Light_Distribution::environment_share() const {
+	if (!scene.environment) return 0.0f;
+	return tree.empty() ? 1.0f : 0.5f;
 }
 
-float Light_Distribution::probability(size_t i) const {
-	return uniform() ? 1.0f / float(light_count(scene)) : probabilities[i];
+Light_Distribution::Choice Light_Distribution::choose(RNG& rng, Vec3 from) const {
+	if (uniform()) {
+		uint32_t n = uint32_t(light_count(scene));
+		return Choice{rng.integer(n), 1.0f / float(n)};
+	}
+	float u = rng.unit();
+	if (choice == Light_Choice::power) {
+		size_t i = size_t(std::upper_bound(cdf.begin(), cdf.end(), u) - cdf.begin());
+		i = std::min(i, cdf.size() - 1);
+		return Choice{i, probabilities[i]};
+	}
+	float environment = environment_share();
+	if (u < environment) return Choice{scene.area_lights.count(), environment};
+	Light_Tree::Choice chosen = tree.choose((u - environment) / (1.0f - environment), from);
+	return Choice{chosen.light, (1.0f - environment) * chosen.probability};
+}
+
+float Light_Distribution::probability(size_t i, Vec3 from) const {
+	if (uniform()) return 1.0f / float(light_count(scene));
+	if (choice == Light_Choice::power) return probabilities[i];
+	float environment = environment_share();
+	if (i == scene.area_lights.count()) return environment;
+	return (1.0f - environment) * tree.probability(i, from);
 }

@@ -1,7 +1,8 @@
 // Every estimator of the renderer estimates the same image, on every shipped scene (image z-tests,
 // framework/film/image_compare.h): next-event estimation with MIS (--integrator nee), lights chosen
-// by power (--light-choice power) and low-discrepancy samples (--sampler sobol) against the lab's
-// estimator (task 4 with task 6's mixture, lights chosen uniformly, independent samples).
+// by power or by the light tree (--light-choice power|tree) and low-discrepancy samples (--sampler
+// sobol) against the lab's estimator (task 4 with task 6's mixture, lights chosen uniformly,
+// independent samples).
 //
 // The z-tests need each image's variance of the mean (compare_estimators: both estimators are the
 // lab's own, so each image's variance counts, unlike a grader's comparison of a submission). With
@@ -93,8 +94,14 @@ TEST_CASE("every estimator renders the same image of every shipped scene", "[int
 		            file + ": the mixture, lights chosen by power");
 		check_agree(lab, rendered(scene, small(scene, Integrator::nee, Light_Choice::uniform, Sampler::independent)),
 		            file + ": next-event estimation with MIS, lights chosen uniformly");
+		check_agree(lab, rendered(scene, small(scene, Integrator::nee, Light_Choice::tree, Sampler::independent)),
+		            file + ": next-event estimation with MIS, lights chosen by the light tree");
+		check_agree(lab, rendered(scene, small(scene, Integrator::mixture, Light_Choice::tree, Sampler::independent)),
+		            file + ": the mixture, lights chosen by the light tree");
 		check_agree(lab, replicated(scene, small(scene, Integrator::nee, Light_Choice::power, Sampler::sobol)),
 		            file + ": next-event estimation with MIS and low-discrepancy samples (16 renders)");
+		check_agree(lab, replicated(scene, small(scene, Integrator::nee, Light_Choice::tree, Sampler::sobol)),
+		            file + ": next-event estimation with MIS, the light tree and low-discrepancy samples (16 renders)");
 		check_agree(lab, replicated(scene, small(scene, Integrator::mixture, Light_Choice::uniform, Sampler::sobol)),
 		            file + ": the mixture with low-discrepancy samples (16 renders)");
 	}

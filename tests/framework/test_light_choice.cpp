@@ -1,7 +1,8 @@
 // Which light a light sample aims at (framework/api/light_distribution.h): by power, each light in
 // proportion to the power it emits (chi-square on the choices), with the same probabilities in
 // every density that counts the choice (area_lights_pdf, sample_light, the NEE integrator's weight
-// of a light found by a BSDF sample). That the choice changes only the noise, not the image, is
+// of a light found by a BSDF sample), whichever the choice (the light tree's own tests:
+// tests/framework/test_light_tree.cpp). That the choice changes only the noise, not the image, is
 // tested on every shipped scene by tests/framework/test_integrators.cpp.
 #include "light_distribution.h"
 #include "light_scenes.h"
@@ -60,14 +61,14 @@ TEST_CASE("Light_Choice::power chooses each light by its power, half of the prob
 	Light_Distribution distribution(scene, Light_Choice::power);
 	for (size_t i = 0; i < 3; i++) {
 		double expected = 0.5 * powers[i] / total + 0.5 / 3.0; // Light_Distribution::UNIFORM_SHARE
-		CHECK(distribution.probability(i) == Approx(expected).epsilon(1e-6));
+		CHECK(distribution.probability(i, Vec3{0.0f}) == Approx(expected).epsilon(1e-6));
 	}
 
 	const size_t n = 1000000;
 	std::vector<double> observed(3, 0.0), expected(3);
 	RNG rng(17);
-	for (size_t k = 0; k < n; k++) observed[distribution.choose(rng)] += 1.0;
-	for (size_t i = 0; i < 3; i++) expected[i] = n * double(distribution.probability(i));
+	for (size_t k = 0; k < n; k++) observed[distribution.choose(rng, Vec3{0.0f}).light] += 1.0;
+	for (size_t i = 0; i < 3; i++) expected[i] = n * double(distribution.probability(i, Vec3{0.0f}));
 	stats::Chi2_Result result = stats::chi2_test(observed, expected);
 	INFO("choices " << observed[0] << " / " << observed[1] << " / " << observed[2] << ", expected " << expected[0]
 	                << " / " << expected[1] << " / " << expected[2]);
@@ -78,25 +79,28 @@ TEST_CASE("Light_Choice::uniform, and a scene whose lights changed, choose every
           "[light_choice]") {
 	Scene scene = three_lights();
 	Light_Distribution uniform(scene, Light_Choice::uniform);
-	for (size_t i = 0; i < 3; i++) CHECK(uniform.probability(i) == Approx(1.0 / 3.0));
+	for (size_t i = 0; i < 3; i++) CHECK(uniform.probability(i, Vec3{0.0f}) == Approx(1.0 / 3.0));
 
-	Light_Distribution by_power(scene, Light_Choice::power);
+	Light_Choice choice = GENERATE(Light_Choice::power, Light_Choice::tree);
+	Light_Distribution chosen(scene, choice);
 	scene.environment.reset(); // a light taken out after the distribution was made
-	for (size_t i = 0; i < 2; i++) CHECK(by_power.probability(i) == 0.5f);
+	for (size_t i = 0; i < 2; i++) CHECK(chosen.probability(i, Vec3{0.0f}) == 0.5f);
 	RNG rng(3);
-	for (int k = 0; k < 1000; k++) REQUIRE(by_power.choose(rng) < 2);
+	for (int k = 0; k < 1000; k++) REQUIRE(chosen.choose(rng, Vec3{0.0f}).light < 2);
 }
 
 TEST_CASE("area_lights_pdf weighs each light's density by its probability", "[light_choice]") {
 	Scene scene = three_lights();
-	Pathtracer pt(scene, choosing(Light_Choice::power));
+	Light_Choice choice = GENERATE(Light_Choice::power, Light_Choice::tree);
+	Pathtracer pt(scene, choosing(choice));
 	Vec3 from{0.1f, 0.0f, 0.2f};
 	RNG rng(5);
 	for (int k = 0; k < 1000; k++) {
 		Vec3 dir = pt.sample_area_lights(rng, from);
-		double expected = pt.light_distribution.probability(0) * scene.area_lights.pdf(0, from, dir) +
-		                  pt.light_distribution.probability(1) * scene.area_lights.pdf(1, from, dir) +
-		                  pt.light_distribution.probability(2) / (4.0 * M_PI);
+		const Light_Distribution& lights = pt.light_distribution;
+		double expected = lights.probability(0, from) * scene.area_lights.pdf(0, from, dir) +
+		                  lights.probability(1, from) * scene.area_lights.pdf(1, from, dir) +
+		                  lights.probability(2, from) / (4.0 * M_PI);
 		CAPTURE(k, dir.x, dir.y, dir.z);
 		REQUIRE(pt.area_lights_pdf(from, dir) == Approx(expected).epsilon(1e-5));
 	}
@@ -108,7 +112,7 @@ TEST_CASE("sample_light's density is the NEE integrator's density of the point i
 	// weights do not add up to 1. A ray from `from` towards the sampled point finds it; its
 	// density there must be the sample's.
 	Scene scene = three_lights();
-	Light_Choice choice = GENERATE(Light_Choice::uniform, Light_Choice::power);
+	Light_Choice choice = GENERATE(Light_Choice::uniform, Light_Choice::power, Light_Choice::tree);
 	Pathtracer pt(scene, choosing(choice));
 	Vec3 from{0.1f, 0.0f, 0.2f};
 	RNG rng(9);

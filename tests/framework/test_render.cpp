@@ -3,6 +3,7 @@
 // variance; non-finite samples are counted, never averaged.
 #include "progressive_render.h"
 #include "render.h"
+#include "scene_loader.h"
 
 #include <catch2/catch.hpp>
 
@@ -98,6 +99,24 @@ TEST_CASE("render is bit-identical for any number of threads, tile size and tile
 		INFO("first differing pixel: " << pixel << " (a pixel's samples must not depend on which thread or "
 		     "tile draws them: seed each with RNG::for_sample)");
 		CHECK(pixel == -1);
+	}
+}
+
+TEST_CASE("a render whose lights the light tree chooses is bit-identical for any number of threads") {
+	// The tree chooses by the shading point: still a pure function of each sample's random numbers.
+	Scene scene = load_scene("scenes/many_lights.json");
+	Render_Settings& settings = scene.settings;
+	settings.width = 24, settings.height = 15, settings.samples = 4, settings.seed = 3;
+	settings.integrator = Integrator::nee;
+	settings.light_choice = Light_Choice::tree;
+	Sampler sampler = GENERATE(Sampler::independent, Sampler::sobol);
+	settings.sampler = sampler;
+	CAPTURE(sampler_name(sampler));
+	Film reference = render(Pathtracer(scene, settings), threads_and_tiles(1, 16));
+	require_random_pixels(reference);
+	for (Render_Options options : {threads_and_tiles(2, 5), threads_and_tiles(0, 3, true)}) {
+		INFO("threads " << options.threads << ", tile size " << options.tile_size);
+		CHECK(first_difference(reference, render(Pathtracer(scene, settings), options)) == -1);
 	}
 }
 

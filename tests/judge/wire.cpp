@@ -163,7 +163,7 @@ void Reader::get(Render_Settings& s) {
 	(*this)(sampler, integrator, light_choice);
 	if (sampler > uint32_t(Sampler::sobol)) throw Malformed("an unknown sampler " + std::to_string(sampler));
 	if (integrator > uint32_t(Integrator::nee)) throw Malformed("an unknown integrator " + std::to_string(integrator));
-	if (light_choice > uint32_t(Light_Choice::power))
+	if (light_choice > uint32_t(Light_Choice::tree))
 		throw Malformed("an unknown light choice " + std::to_string(light_choice));
 	s.sampler = Sampler(sampler), s.integrator = Integrator(integrator), s.light_choice = Light_Choice(light_choice);
 }
