@@ -51,6 +51,11 @@ std::vector<std::string> lab(std::vector<std::string> flags) {
 	return all;
 }
 
+// NEE with independent samples, lights chosen as `how` says.
+std::vector<std::string> nee_choosing(const char* how) {
+	return {"--integrator", "nee", "--sampler", "independent", "--light-choice", how};
+}
+
 const std::vector<Experiment> EXPERIMENTS{
 	{"small_light", "scenes/cornell_small_light.json", "small light: BSDF sampling vs task 6's mixture",
 	 {"bsdf only", lab({"--no-light-sampling"})}, {"mixture", lab({})}},
@@ -70,6 +75,20 @@ const std::vector<Experiment> EXPERIMENTS{
 	{"light_choice_sky", "scenes/dragon.json", "lamp under a sky: chosen uniformly vs by power",
 	 {"uniform", {"--integrator", "nee", "--sampler", "independent", "--light-choice", "uniform"}},
 	 {"power", {"--integrator", "nee", "--sampler", "independent", "--light-choice", "power"}}},
+	// The light tree (issue 26) against the choice each scene had before: by power (and uniform
+	// where power loses).
+	{"tree_many", "scenes/many_lights.json", "120 lamps: chosen by power vs the light tree",
+	 {"power", nee_choosing("power")}, {"tree", nee_choosing("tree")}},
+	{"tree_many_uniform", "scenes/many_lights.json", "120 lamps: chosen uniformly vs the light tree",
+	 {"uniform", nee_choosing("uniform")}, {"tree", nee_choosing("tree")}},
+	{"tree_sky", "scenes/dragon.json", "lamp under a sky: chosen uniformly vs the light tree",
+	 {"uniform", nee_choosing("uniform")}, {"tree", nee_choosing("tree")}},
+	{"tree_sky_power", "scenes/dragon.json", "lamp under a sky: chosen by power vs the light tree",
+	 {"power", nee_choosing("power")}, {"tree", nee_choosing("tree")}},
+	{"tree_overcast", "scenes/dragon_overcast.json", "lamp under an HDR sky: by power vs the light tree",
+	 {"power", nee_choosing("power")}, {"tree", nee_choosing("tree")}},
+	{"tree_one_light", "scenes/cornell_box.json", "one light: by power vs the light tree (the same choices)",
+	 {"power", nee_choosing("power")}, {"tree", nee_choosing("tree")}},
 };
 
 constexpr uint32_t REFERENCE_FACTOR = 64;
@@ -88,7 +107,7 @@ struct Options {
 };
 
 const char* const USAGE =
-	"usage: convergence_bench [--out DIR] [--seeds N] [--max-spp N] [--size WxH] [--threads T] [--experiment NAME]\n"
+	"usage: convergence_bench [--out DIR] [--seeds N] [--max-spp N] [--size WxH] [--threads T] [--experiment NAME[,NAME...]]\n"
 	"\n"
 	"Renders each experiment's two strategies at spp = 1, 2, 4, ..., N (default 64; a power of two) on a WxH\n"
 	"film (default 64x64) with T threads (default 0 = all cores): --seeds renders (default 8) at N spp, and as\n"
@@ -101,14 +120,20 @@ const char* const USAGE =
 	"Budgets much smaller than the defaults may not see a heavy tail's rare paths at all, and its curve then\n"
 	"looks biased.\n"
 	"\n"
-	"experiments (--experiment NAME runs one; each strategy is a list of pathtracer_reference's flags):\n"
+	"experiments (--experiment NAME,... runs those; each strategy is a list of pathtracer_reference's flags):\n"
 	"  small_light       cornell_small_light: bsdf only (--no-light-sampling) vs task 6's mixture\n"
 	"  sun               bunny_sun: uniform env vs importance env (--env-sampling uniform|importance)\n"
 	"  roulette          bench/convergence_closed_box.json: no roulette (--no-roulette) vs roulette\n"
 	"  integrator        cornell_box: --integrator mixture vs nee\n"
 	"  sampler           cornell_box: --sampler independent vs sobol\n"
 	"  light_choice      bench/convergence_two_lights.json: --light-choice uniform vs power\n"
-	"  light_choice_sky  dragon (a lamp under a sky): --light-choice uniform vs power\n";
+	"  light_choice_sky  dragon (a lamp under a sky): --light-choice uniform vs power\n"
+	"  tree_many         many_lights (120 lamps): --light-choice power vs tree\n"
+	"  tree_many_uniform many_lights: --light-choice uniform vs tree\n"
+	"  tree_sky          dragon: --light-choice uniform vs tree\n"
+	"  tree_sky_power    dragon: --light-choice power vs tree\n"
+	"  tree_overcast     dragon_overcast (a lamp under an HDR sky): --light-choice power vs tree\n"
+	"  tree_one_light    cornell_box (one light: the same choices): --light-choice power vs tree\n";
 
 [[noreturn]] void usage_error(const std::string& message) {
 	std::fprintf(stderr, "convergence_bench: %s\n\n%s", message.c_str(), USAGE);
@@ -413,10 +438,20 @@ Plot convergence_plot(const std::vector<Result>& results, const Options& o) {
 }
 
 int run(const Options& o) {
+	// --experiment A,B,C: those, in the table's order.
+	std::vector<std::string> names;
+	for (size_t begin = 0; begin < o.experiment.size();) {
+		size_t comma = std::min(o.experiment.find(',', begin), o.experiment.size());
+		names.push_back(o.experiment.substr(begin, comma - begin));
+		begin = comma + 1;
+	}
 	std::vector<const Experiment*> chosen;
 	for (const Experiment& e : EXPERIMENTS)
-		if (o.experiment.empty() || o.experiment == e.name) chosen.push_back(&e);
-	if (chosen.empty()) usage_error("unknown experiment '" + o.experiment + "'");
+		if (names.empty() || std::find(names.begin(), names.end(), e.name) != names.end()) chosen.push_back(&e);
+	for (const std::string& name : names) {
+		auto named = [&](const Experiment* e) { return name == e->name; };
+		if (std::none_of(chosen.begin(), chosen.end(), named)) usage_error("unknown experiment '" + name + "'");
+	}
 
 	Clock::time_point start = Clock::now();
 	std::string csv_path = o.out + "/convergence.csv", svg_path = o.out + "/convergence.svg";

@@ -14,13 +14,20 @@
 // half as often as uniform choice would, which bounds the loss to a factor of 2.
 //
 // The tree holds the area lights only: an environment has neither a position nor a direction it
-// faces. As pbrt-v4's BVHLightSampler does, the environment and the tree are each chosen half the
-// time (the environment always if there are no area lights), and the tree then chooses among the
-// area lights.
-#include "light_tree.h"
+// faces. pbrt-v4's BVHLightSampler chooses the environment and the tree half the time each, however
+// little the sky lights a point under a lamp. Here the environment's share at a point follows the
+// light each can send there, as Cycles' light tree weighs its background against its local lights:
+// bounds on the irradiance, in one unit: the tree's importance / pi (a one-sided Lambertian
+// emitter of power phi = pi A L causes at most L A / d^2 = phi / (pi d^2)) and the sky's pi times
+// its mean luminance (what a uniform sky of that radiance causes). Half of the share is kept
+// even (the defensive mixture above): the environment's share stays within [1/4, 3/4], so neither
+// side can lose more than a factor of 2 against pbrt-v4's halves. With no area lights it is 1.
 #include "scene.h"
 
+#include <memory>
 #include <vector>
+
+class Light_Tree; // light_tree.h (framework code, not the student's API)
 
 // The power each light emits, in the order above: an area light pi * area * luminance(emission);
 // the environment pi R^2 times the integral of its luminance over the
@@ -52,12 +59,13 @@ public:
 
 private:
 	bool uniform() const; // by choice, or because the scene's lights changed
-	float environment_share() const; // Light_Choice::tree: 0, 1/2 or 1 (above)
+	float environment_share(Vec3 from) const; // Light_Choice::tree (above)
 
 	const Scene& scene;
 	Light_Choice choice = Light_Choice::uniform; // uniform if the powers cannot be used
 	size_t lights_when_made = 0;
 	std::vector<float> probabilities; // by power
 	std::vector<float> cdf;           // running sum of the probabilities, the last exactly 1
-	Light_Tree tree;
+	std::shared_ptr<const Light_Tree> tree; // Light_Choice::tree
+	float environment_irradiance = 0.0f; // pi * its mean luminance
 };

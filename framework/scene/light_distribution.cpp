@@ -1,4 +1,5 @@
 #include "light_distribution.h"
+#include "light_tree.h"
 
 #include <algorithm>
 #include <numeric>
@@ -51,7 +52,9 @@ Light_Distribution::Light_Distribution(const Scene& scene_, Light_Choice choice_
 	if (!usable) return;
 	choice = choice_;
 	if (choice == Light_Choice::tree) {
-		tree = Light_Tree(scene.area_lights, powers);
+		tree = std::make_shared<const Light_Tree>(scene.area_lights, powers);
+		// pi * (integral of luminance over the sphere) / (4 pi)
+		if (scene.environment) environment_irradiance = float(0.25 * environment_integral(*scene.environment));
 		return;
 	}
 	double sum = 0.0, uniform = 1.0 / double(powers.size());
@@ -68,9 +71,13 @@ bool Light_Distribution::uniform() const {
 	return choice == Light_Choice::uniform || light_count(scene) != lights_when_made;
 }
 
-float Light_Distribution::environment_share() const {
+float Light_Distribution::environment_share(Vec3 from) const {
 	if (!scene.environment) return 0.0f;
-	return tree.empty() ? 1.0f : 0.5f;
+	if (tree->empty()) return 1.0f;
+	float lights = tree->importance(from) / PI_F;
+	float by_irradiance = environment_irradiance / (environment_irradiance + lights);
+	if (!std::isfinite(by_irradiance)) by_irradiance = 0.5f; // neither lights the point
+	return float(UNIFORM_SHARE * 0.5 + (1.0 - UNIFORM_SHARE) * by_irradiance); // in [1/4, 3/4]
 }
 
 Light_Distribution::Choice Light_Distribution::choose(RNG& rng, Vec3 from) const {
@@ -84,16 +91,16 @@ Light_Distribution::Choice Light_Distribution::choose(RNG& rng, Vec3 from) const
 		i = std::min(i, cdf.size() - 1);
 		return Choice{i, probabilities[i]};
 	}
-	float environment = environment_share();
+	float environment = environment_share(from);
 	if (u < environment) return Choice{scene.area_lights.count(), environment};
-	Light_Tree::Choice chosen = tree.choose((u - environment) / (1.0f - environment), from);
+	Light_Tree::Choice chosen = tree->choose((u - environment) / (1.0f - environment), from);
 	return Choice{chosen.light, (1.0f - environment) * chosen.probability};
 }
 
 float Light_Distribution::probability(size_t i, Vec3 from) const {
 	if (uniform()) return 1.0f / float(light_count(scene));
 	if (choice == Light_Choice::power) return probabilities[i];
-	float environment = environment_share();
+	float environment = environment_share(from);
 	if (i == scene.area_lights.count()) return environment;
-	return (1.0f - environment) * tree.probability(i, from);
+	return (1.0f - environment) * tree->probability(i, from);
 }

@@ -23,7 +23,6 @@
 class Light_Tree {
 public:
 	// A tree over `lights`, light i emitting powers[i]; empty without lights.
-	Light_Tree() = default;
 	Light_Tree(const Area_Lights& lights, const std::vector<double>& powers);
 
 	bool empty() const {
@@ -38,6 +37,10 @@ public:
 	Choice choose(float u, Vec3 p) const;
 	// The probability that choose(., p) chooses `light`: exactly the one choose() reports.
 	float probability(size_t light, Vec3 p) const;
+	// The importance of all the lights together at p (Light_Bounds::importance); 0 if empty.
+	float importance(Vec3 p) const {
+		return empty() ? 0.0f : nodes[0].bounds.importance(p);
+	}
 
 private:
 	struct Node {

@@ -2,17 +2,21 @@
 // probabilities of the scene's lights sum to 1, it chooses each light as often as that probability
 // says (chi-square), and the probability it reports with a light is exactly the one it gives that
 // light when asked again (what the NEE integrator's MIS weight needs). Its bounds never rule out a
-// light that can light the point. That images rendered with it are the same as with the other
+// light that can light the point, and with one light it renders exactly what choice by power
+// renders. That images rendered with it are the same as with the other
 // choices is tested by tests/framework/test_integrators.cpp; that they do not depend on the
 // threads, by tests/framework/test_render.cpp.
 #include "light_distribution.h"
 #include "light_scenes.h"
+#include "render.h"
+#include "scene_loader.h"
 #include "statistics.h"
 
 #include <catch2/catch.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
+#include <cstring>
 
 namespace {
 
@@ -69,8 +73,25 @@ TEST_CASE("the light tree's probabilities of all lights sum to 1 at any point", 
 		}
 		CAPTURE(p.x, p.y, p.z);
 		CHECK(std::abs(sum - 1.0) <= rounding);
-		CHECK(p_light.back() == 0.5); // the sky: half the time, as pbrt-v4's BVHLightSampler
 	}
+}
+
+TEST_CASE("the light tree leaves the sky between a quarter and three quarters of the samples, more far from the lamps",
+          "[light_tree]") {
+	Scene scene = field_of_lamps();
+	Light_Distribution tree(scene, Light_Choice::tree);
+	size_t sky = scene.area_lights.count();
+	for (Vec3 p : POINTS) {
+		CAPTURE(p.x, p.y, p.z);
+		CHECK(tree.probability(sky, p) >= 0.25f);
+		CHECK(tree.probability(sky, p) <= 0.75f);
+	}
+	CHECK(tree.probability(sky, Vec3{-1.3f, 2.4f, 0.6f}) < tree.probability(sky, Vec3{40.0f, 3.0f, 25.0f}));
+	// Without area lights the sky is the only light.
+	Scene sky_only;
+	sky_only.environment = Env_Constant{Spectrum{1.0f}};
+	sky_only.commit();
+	CHECK(Light_Distribution(sky_only, Light_Choice::tree).probability(0, Vec3{0.0f}) == 1.0f);
 }
 
 TEST_CASE("the light tree chooses each light as often as its probability says (chi-square)", "[light_tree]") {
@@ -160,4 +181,25 @@ TEST_CASE("where no light faces the point, the light tree still chooses one (eac
 	CHECK(tree.probability(1, above) == 0.5f);
 	RNG rng(8);
 	for (int k = 0; k < 100; k++) REQUIRE(tree.choose(rng, above).probability == 0.5f);
+}
+
+TEST_CASE("with one light the light tree renders what choice by power renders, bit for bit", "[light_tree]") {
+	// One area light (the Cornell box) or only a sky (bunny_sun): both choose it with probability 1
+	// from the same random number, so the tree costs these scenes nothing but its walk's test.
+	for (const char* file : {"scenes/cornell_box.json", "scenes/bunny_sun.json"}) {
+		Scene scene = load_scene(file);
+		Render_Settings settings = scene.settings;
+		settings.width = settings.height = 16;
+		settings.samples = 4;
+		settings.integrator = Integrator::nee;
+		settings.light_choice = Light_Choice::power;
+		Film by_power = render(Pathtracer(scene, settings));
+		settings.light_choice = Light_Choice::tree;
+		Film by_tree = render(Pathtracer(scene, settings));
+		CAPTURE(file);
+		for (size_t i = 0; i < by_power.pixels.size(); i++) {
+			CAPTURE(i);
+			REQUIRE(std::memcmp(&by_power.pixels[i].mean, &by_tree.pixels[i].mean, sizeof(glm::dvec3)) == 0);
+		}
+	}
 }
