@@ -1,4 +1,4 @@
-// The light tree (framework/light_tree.h, Light_Choice::tree): at any shading point its
+// The light tree (framework/scene/light_tree.h, Light_Choice::tree): at any shading point its
 // probabilities of the scene's lights sum to 1, it chooses each light as often as that probability
 // says (chi-square), and the probability it reports with a light is exactly the one it gives that
 // light when asked again (what the NEE integrator's MIS weight needs). Its bounds never rule out a
@@ -6,6 +6,7 @@
 // renders. That images rendered with it are the same as with the other
 // choices is tested by tests/framework/test_integrators.cpp; that they do not depend on the
 // threads, by tests/framework/test_render.cpp.
+#include "light_bounds.h"
 #include "light_distribution.h"
 #include "light_scenes.h"
 #include "render.h"
