@@ -1,0 +1,319 @@
+// Blender Cycles beside the lab's reference renderer in one run: both render the same scene (the
+// Cornell box by default, max depth 100, 2 threads) at the same spp ladder, interleaved, each as the
+// command a user runs; relMSE against one reference of each renderer (two independent halves, whose
+// difference estimates the reference's own noise); time to relMSE 1e-3 from the command's start and
+// from the render time alone. `./lab bench cycles --help`; bench/README.md.
+#include "bench_timing.h"
+#include "convergence_metrics.h"
+#include "convergence_plot.h"
+#include "cycles/renderer_runs.h"
+#include "image_io.h"
+#include "text_file.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+constexpr double TARGET_REL_MSE = 1e-3;
+const Renderer RENDERERS[] = {Renderer::lab, Renderer::cycles};
+
+struct Options {
+	std::string scene = "scenes/cornell_box.json";
+	std::vector<uint32_t> ladder{16, 32, 64, 128, 256};
+	uint32_t repeats = 3, reference_spp = 4096, threads = 2, max_depth = 100;
+	std::string out = "bench/results", cache = LAB_BENCH_BINARY_DIR "/cycles_cache";
+};
+
+const char* const USAGE =
+	"usage: cycles_bench [SCENE] [--spp-ladder N,N,...] [--repeats N] [--reference-spp N] [--max-depth D]\n"
+	"                    [--threads T] [--out DIR]\n"
+	"\n"
+	"Renders SCENE (default scenes/cornell_box.json; its film size) with the lab's reference renderer and with\n"
+	"Blender Cycles (bench/cycles/render_in_cycles.py: matched settings), at max depth D (default 100; 0: the\n"
+	"scene's) on T threads (default 2), --repeats times (default 3) at each spp of the ladder (default\n"
+	"16,32,64,128,256), in a shuffled order, the two renderers taking turns. Each run is timed from the\n"
+	"command's start to its exit, and by the render time the renderer reports. relMSE is measured against\n"
+	"each renderer's own reference of --reference-spp samples (default 4096, two halves with other seeds;\n"
+	"cached under the build directory: delete it after changing a renderer); the reference's noise is\n"
+	"subtracted. Prints and writes DIR/cycles_time_to_error.{md,csv,svg} (default DIR: bench/results):\n"
+	"time to relMSE 1e-3 for both renderers, the efficiency 1 / (relMSE * seconds), their ratio, and the\n"
+	"load average before and after.\n";
+
+[[noreturn]] void usage_error(const std::string& message) {
+	std::fprintf(stderr, "cycles_bench: %s\n\n%s", message.c_str(), USAGE);
+	std::exit(2);
+}
+
+uint32_t whole(const std::string& option, const std::string& text, uint32_t least) {
+	char* end = nullptr;
+	long value = std::strtol(text.c_str(), &end, 10);
+	if (text.empty() || *end || value < long(least) || value > 1000000)
+		usage_error(option + " needs a whole number >= " + std::to_string(least) + ", got '" + text + "'");
+	return uint32_t(value);
+}
+
+Options parse(int argc, char** argv) {
+	Options o;
+	for (int i = 1; i < argc; i++) {
+		std::string arg = argv[i];
+		if (arg == "-h" || arg == "--help") {
+			std::printf("%s", USAGE);
+			std::exit(0);
+		}
+		if (arg.rfind("--", 0) != 0) {
+			o.scene = arg;
+			continue;
+		}
+		if (i + 1 >= argc) usage_error("unknown option or missing value: '" + arg + "'");
+		std::string value = argv[++i];
+		if (arg == "--repeats") o.repeats = whole(arg, value, 1);
+		else if (arg == "--reference-spp") o.reference_spp = whole(arg, value, 2);
+		else if (arg == "--max-depth") o.max_depth = whole(arg, value, 0);
+		else if (arg == "--threads") o.threads = whole(arg, value, 1);
+		else if (arg == "--out") o.out = value;
+		else if (arg == "--spp-ladder") {
+			o.ladder.clear();
+			for (size_t start = 0; start <= value.size();) {
+				size_t comma = std::min(value.find(',', start), value.size());
+				o.ladder.push_back(whole(arg, value.substr(start, comma - start), 1));
+				start = comma + 1;
+			}
+			std::sort(o.ladder.begin(), o.ladder.end());
+			if (o.ladder.size() < 2) usage_error("--spp-ladder needs two spp or more, e.g. 16,32,64");
+		} else usage_error("unknown option '" + arg + "'");
+	}
+	if (!std::filesystem::is_regular_file(o.scene)) usage_error("no such scene file: " + o.scene);
+	return o;
+}
+
+double mean(const std::vector<double>& values) {
+	double sum = 0.0;
+	for (double v : values) sum += v;
+	return sum / double(values.size());
+}
+
+// ---- References ---------------------------------------------------------------------------------
+
+// A renderer's high-spp image as two halves (seeds 1000001 and 1000002), cached under a name made
+// from what it depends on.
+Noisy_Image reference(Renderer renderer, const Options& o, const std::string& work_dir) {
+	std::string identity = read_text_file(o.scene) + "|" + read_text_file(LAB_CYCLES_SCRIPT) + "|" +
+	                       std::to_string(o.reference_spp) + "|" + std::to_string(o.max_depth);
+	char key[32];
+	std::snprintf(key, sizeof key, "%016zx", std::hash<std::string>{}(identity));
+	std::filesystem::create_directories(o.cache);
+	std::vector<HDR_Image> halves;
+	for (uint64_t half = 1; half <= 2; half++) {
+		std::string path = o.cache + "/" + (renderer == Renderer::lab ? "lab_" : "cycles_") + key + "_" +
+		                   std::to_string(half) + ".exr";
+		if (!std::filesystem::exists(path)) {
+			Render_Request request{o.scene, o.reference_spp / 2, 1000000 + half, o.threads, o.max_depth, {}};
+			Renderer_Run run = run_renderer(renderer, request, work_dir);
+			std::printf("  %s reference half %llu: %u spp in %.0f s\n", renderer_name(renderer),
+			            static_cast<unsigned long long>(half), request.spp, run.command_seconds);
+			std::fflush(stdout);
+			write_exr(path, run.image);
+		}
+		halves.push_back(read_image(path));
+	}
+	return from_two_halves(halves[0], halves[1]);
+}
+
+// ---- One renderer's series ----------------------------------------------------------------------
+
+struct Run_Result {
+	uint32_t spp;
+	double command_seconds, render_seconds;
+	double rel_mse[2]; // against our reference, against Cycles'
+};
+
+struct Curve {
+	std::vector<double> spp, command_seconds, render_seconds, rel_mse; // per spp: medians of times, mean relMSE
+	double command_to_target = 0, render_to_target = 0, efficiency = 0, ms_per_spp = 0, slope = 0;
+};
+
+// The x at which the least-squares line of log y on log x reaches y = target.
+double fitted_x_at(const std::vector<double>& x, const std::vector<double>& y, double target) {
+	double slope = log_log_slope(x, y), mean_u = 0.0, mean_v = 0.0;
+	for (size_t i = 0; i < x.size(); i++) {
+		mean_u += std::log(x[i]) / double(x.size());
+		mean_v += std::log(y[i]) / double(x.size());
+	}
+	return std::exp(mean_u + (std::log(target) - mean_v) / slope);
+}
+
+// `against`: 0 our reference, 1 Cycles'; `noise`: that reference's share of every relMSE.
+Curve fit(const std::vector<Run_Result>& runs, const std::vector<uint32_t>& ladder, int against, double noise) {
+	Curve c;
+	std::vector<double> efficiency, ms;
+	for (uint32_t spp : ladder) {
+		std::vector<double> command, render, error;
+		for (const Run_Result& r : runs) {
+			if (r.spp != spp) continue;
+			command.push_back(r.command_seconds);
+			render.push_back(r.render_seconds);
+			error.push_back(r.rel_mse[against]);
+		}
+		c.spp.push_back(spp);
+		c.command_seconds.push_back(median(command));
+		c.render_seconds.push_back(median(render));
+		c.rel_mse.push_back(std::max(mean(error) - noise, 1e-12));
+		efficiency.push_back(1.0 / (c.rel_mse.back() * c.render_seconds.back()));
+		ms.push_back(1000.0 * c.render_seconds.back() / spp);
+	}
+	c.slope = log_log_slope(c.spp, c.rel_mse);
+	c.command_to_target = fitted_x_at(c.command_seconds, c.rel_mse, TARGET_REL_MSE);
+	c.render_to_target = fitted_x_at(c.render_seconds, c.rel_mse, TARGET_REL_MSE);
+	c.efficiency = median(efficiency);
+	c.ms_per_spp = ms.back(); // at the largest spp, where the fixed costs weigh least
+	return c;
+}
+
+std::string fixed(double value, int digits) {
+	char text[64];
+	std::snprintf(text, sizeof text, "%.*f", digits, value);
+	return text;
+}
+
+std::string general(double value) {
+	char text[64];
+	std::snprintf(text, sizeof text, "%.3g", value);
+	return text;
+}
+
+int run(const Options& o) {
+	std::string work_dir = std::filesystem::temp_directory_path() / ("lab_cycles_bench_" + std::to_string(getpid()));
+	std::filesystem::create_directories(work_dir);
+	std::string load_before = load_average();
+	std::printf("Cycles beside ours: %s, max depth %u, %u threads; load average at the start: %s\n", o.scene.c_str(),
+	            o.max_depth, o.threads, load_before.c_str());
+	std::printf("references (%u spp each, two halves; cached in %s):\n", o.reference_spp, o.cache.c_str());
+	std::fflush(stdout);
+	Noisy_Image references[2] = {reference(Renderer::lab, o, work_dir), reference(Renderer::cycles, o, work_dir)};
+	double noise[2] = {noise_rel_mse(references[0], references[0].mean), noise_rel_mse(references[1], references[1].mean)};
+	double references_apart = rel_mse(references[1].mean, references[0].mean);
+	std::printf("the references' own noise adds %.3g (ours) and %.3g (Cycles') to every relMSE; subtracted\n"
+	            "the two references differ by relMSE %.3g (their noise alone: %.3g)\n",
+	            noise[0], noise[1], references_apart, noise[0] + noise[1]);
+
+	struct Job {
+		uint32_t spp;
+		uint64_t seed;
+	};
+	std::vector<Job> jobs;
+	uint64_t seed = 1;
+	for (uint32_t spp : o.ladder)
+		for (uint32_t i = 0; i < o.repeats; i++) jobs.push_back({spp, seed++});
+	std::shuffle(jobs.begin(), jobs.end(), std::mt19937(12345));
+
+	std::filesystem::create_directories(o.out);
+	std::string csv_path = o.out + "/cycles_time_to_error.csv";
+	std::ofstream csv(csv_path);
+	csv << "renderer,spp,seed,command_seconds,render_seconds,relmse_vs_ours,relmse_vs_cycles\n";
+	std::vector<Run_Result> results[2];
+	std::printf("rendering %zu images per renderer, taking turns...", jobs.size());
+	std::fflush(stdout);
+	auto start = std::chrono::steady_clock::now();
+	for (size_t j = 0; j < jobs.size(); j++) {
+		for (size_t turn = 0; turn < 2; turn++) {
+			size_t k = (j + turn) % 2; // who goes first alternates
+			Render_Request request{o.scene, jobs[j].spp, jobs[j].seed, o.threads, o.max_depth, {}};
+			Renderer_Run run = run_renderer(RENDERERS[k], request, work_dir);
+			Run_Result r{jobs[j].spp, run.command_seconds, run.render_seconds,
+			             {rel_mse(run.image, references[0].mean), rel_mse(run.image, references[1].mean)}};
+			results[k].push_back(r);
+			csv << renderer_name(RENDERERS[k]) << "," << r.spp << "," << jobs[j].seed << "," << r.command_seconds << ","
+			    << r.render_seconds << "," << r.rel_mse[0] << "," << r.rel_mse[1] << "\n";
+		}
+	}
+	std::string load_after = load_average();
+	std::printf(" %.0f s; load average at the end: %s\n",
+	            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), load_after.c_str());
+	std::filesystem::remove_all(work_dir);
+
+	// Against Cycles' reference (the independent anchor), and against ours beside it.
+	Curve curves[2][2]; // [renderer][against]
+	for (int k = 0; k < 2; k++)
+		for (int a = 0; a < 2; a++) curves[k][a] = fit(results[k], o.ladder, a, noise[a]);
+
+	std::string table;
+	table += "Scene `" + o.scene + "`, film as in the scene, max depth " + std::to_string(o.max_depth) + ", " +
+	         std::to_string(o.threads) + " threads; " + std::to_string(o.repeats) + " renders per spp and renderer; " +
+	         "load average (1, 5, 15 min) " + load_before + " before, " + load_after + " after.\n\n";
+	table += "| renderer | reference | relMSE at";
+	for (uint32_t spp : o.ladder) table += " " + std::to_string(spp);
+	table += " spp | slope | command s at each spp | render s at each spp | ms per spp | to 1e-3 (command) | "
+	         "to 1e-3 (render) | efficiency (render) |\n|---|---|---|---|---|---|---|---|---|---|\n";
+	for (int a : {1, 0})
+		for (int k = 0; k < 2; k++) {
+			const Curve& c = curves[k][a];
+			std::string errors, command, render;
+			for (size_t i = 0; i < c.spp.size(); i++) {
+				errors += (i ? " / " : "") + general(c.rel_mse[i]);
+				command += (i ? " / " : "") + fixed(c.command_seconds[i], 2);
+				render += (i ? " / " : "") + fixed(c.render_seconds[i], 2);
+			}
+			table += std::string("| ") + renderer_name(RENDERERS[k]) + " | " + (a ? "Cycles'" : "ours") + " | " + errors +
+			         " | " + fixed(c.slope, 2) + " | " + command + " | " + render + " | " + fixed(c.ms_per_spp, 1) +
+			         " | " + fixed(c.command_to_target, 2) + " s | " + fixed(c.render_to_target, 2) + " s | " +
+			         fixed(c.efficiency, 0) + " |\n";
+		}
+	const Curve &ours = curves[0][1], &cycles = curves[1][1];
+	table += "\nAgainst Cycles' reference: ours reaches relMSE 1e-3 " +
+	         fixed(cycles.command_to_target / ours.command_to_target, 2) + "x as fast as Cycles from the command's start (" +
+	         fixed(ours.command_to_target, 2) + " s against " + fixed(cycles.command_to_target, 2) + " s), " +
+	         fixed(cycles.render_to_target / ours.render_to_target, 2) + "x in render time alone (" +
+	         fixed(ours.render_to_target, 2) + " s against " + fixed(cycles.render_to_target, 2) + " s); efficiency ratio " +
+	         fixed(ours.efficiency / cycles.efficiency, 2) + "x. The references differ by relMSE " +
+	         general(references_apart) + ".\n\n(relMSE: mean over the renders, minus the reference's own noise; "
+	         "command: wall time from the command's start to its exit, median; render: the time the renderer reports "
+	         "(ours: rendering; Cycles: the render call, scene sync and BVH included); to 1e-3: from the line fitted to "
+	         "log relMSE on log seconds; efficiency: 1 / (relMSE x render seconds), median over the ladder.)\n";
+	std::printf("\n%s", table.c_str());
+	std::ofstream(o.out + "/cycles_time_to_error.md") << table;
+
+	Plot plot;
+	plot.title = "Time to relMSE 1e-3: the lab's reference renderer beside Blender Cycles 3.4, one run";
+	plot.subtitle = o.scene + ", max depth " + std::to_string(o.max_depth) + ", " + std::to_string(o.threads) +
+	                " threads; against Cycles' " + std::to_string(o.reference_spp) + "-spp reference; load " +
+	                load_before + " -> " + load_after;
+	plot.x_label = "seconds";
+	plot.columns = 2;
+	for (int timing = 0; timing < 2; timing++) {
+		Plot_Panel panel{timing ? "from the command's start" : "render time alone", "", {}};
+		double ours_t = timing ? ours.command_to_target : ours.render_to_target;
+		double cycles_t = timing ? cycles.command_to_target : cycles.render_to_target;
+		panel.headline = "1e-3: ours " + fixed(ours_t, 2) + " s, Cycles " + fixed(cycles_t, 2) + " s (" +
+		                 fixed(cycles_t / ours_t, 2) + "x)";
+		for (int k = 0; k < 2; k++) {
+			const Curve& c = curves[k][1];
+			panel.series.push_back({renderer_name(RENDERERS[k]), timing ? c.command_seconds : c.render_seconds, c.rel_mse, {}});
+		}
+		plot.panels.push_back(panel);
+	}
+	write_convergence_svg(o.out + "/cycles_time_to_error.svg", plot);
+	std::printf("\nwrote %s/cycles_time_to_error.{md,csv,svg}\n", o.out.c_str());
+	return csv ? 0 : 1;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+	try {
+		return run(parse(argc, argv));
+	} catch (const std::exception& e) {
+		std::fprintf(stderr, "error: %s\n", e.what());
+		return 1;
+	}
+}
