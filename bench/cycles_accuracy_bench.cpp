@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace {
@@ -136,11 +137,11 @@ Comparison compare(const Noisy_Image& ours, const Noisy_Image& cycles) {
 	for (int c = 0; c < 3; c++) {
 		Region_Mean a = region_mean(ours, c, 0, w, 0, h), b = region_mean(cycles, c, 0, w, 0, h);
 		double se = std::sqrt(a.variance + b.variance) / a.mean;
-		result.whole_means += fmt("%s%+.2f", c ? " / " : "", 100.0 * (b.mean / a.mean - 1.0)) + fmt(" ± %.2f", 100.0 * se);
+		result.whole_means += (c ? " / " : "") + fmt("%+.2f", 100.0 * (b.mean / a.mean - 1.0)) + fmt(" ± %.2f", 100.0 * se);
 	}
 	result.rel_mse = rel_mse(cycles.mean, ours.mean);
 	result.rel_mse_noise = noise_rel_mse(ours, ours.mean) + noise_rel_mse(cycles, ours.mean);
-	double critical = two_sided_z(sidak(FAMILY_ALPHA, GRID * GRID * 3));
+	double critical = stats::two_sided_z(stats::sidak(FAMILY_ALPHA, GRID * GRID * 3));
 	for (uint32_t gy = 0; gy < GRID; gy++)
 		for (uint32_t gx = 0; gx < GRID; gx++)
 			for (int c = 0; c < 3; c++) {
@@ -163,7 +164,7 @@ int run(const Options& o) {
 	std::filesystem::create_directories(o.images);
 	std::filesystem::create_directories(o.out);
 	std::string load_before = load_average();
-	double critical = two_sided_z(sidak(FAMILY_ALPHA, GRID * GRID * 3));
+	double critical = stats::two_sided_z(stats::sidak(FAMILY_ALPHA, GRID * GRID * 3));
 	std::printf("Cycles against ours on %zu scenes, %u spp each (two halves), %u threads; load average: %s\n",
 	            o.scenes.size(), o.spp, o.threads, load_before.c_str());
 	std::string table =

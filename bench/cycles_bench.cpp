@@ -21,6 +21,7 @@
 #include <map>
 #include <random>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace {
@@ -140,7 +141,7 @@ struct Run_Result {
 
 struct Curve {
 	std::vector<double> spp, command_seconds, render_seconds, rel_mse; // per spp: medians of times, mean relMSE
-	double command_to_target = 0, render_to_target = 0, efficiency = 0, ms_per_spp = 0, slope = 0;
+	double slope = 0, spp_to_target = 0, command_to_target = 0, render_to_target = 0, efficiency = 0, ms_per_spp = 0;
 };
 
 // The x at which the least-squares line of log y on log x reaches y = target.
@@ -151,6 +152,22 @@ double fitted_x_at(const std::vector<double>& x, const std::vector<double>& y, d
 		mean_v += std::log(y[i]) / double(x.size());
 	}
 	return std::exp(mean_u + (std::log(target) - mean_v) / slope);
+}
+
+// The least-squares line y = a + b x, evaluated at `at`: a run's time is a fixed cost plus a cost per
+// sample (Blender's start-up, loading and the BVH are the fixed cost of a command).
+double linear_fit_at(const std::vector<double>& x, const std::vector<double>& y, double at) {
+	double n = double(x.size()), mean_x = 0.0, mean_y = 0.0;
+	for (size_t i = 0; i < x.size(); i++) {
+		mean_x += x[i] / n;
+		mean_y += y[i] / n;
+	}
+	double covariance = 0.0, spread = 0.0;
+	for (size_t i = 0; i < x.size(); i++) {
+		covariance += (x[i] - mean_x) * (y[i] - mean_y);
+		spread += (x[i] - mean_x) * (x[i] - mean_x);
+	}
+	return mean_y + covariance / spread * (at - mean_x);
 }
 
 // `against`: 0 our reference, 1 Cycles'; `noise`: that reference's share of every relMSE.
@@ -173,8 +190,9 @@ Curve fit(const std::vector<Run_Result>& runs, const std::vector<uint32_t>& ladd
 		ms.push_back(1000.0 * c.render_seconds.back() / spp);
 	}
 	c.slope = log_log_slope(c.spp, c.rel_mse);
-	c.command_to_target = fitted_x_at(c.command_seconds, c.rel_mse, TARGET_REL_MSE);
-	c.render_to_target = fitted_x_at(c.render_seconds, c.rel_mse, TARGET_REL_MSE);
+	c.spp_to_target = fitted_x_at(c.spp, c.rel_mse, TARGET_REL_MSE);
+	c.command_to_target = linear_fit_at(c.spp, c.command_seconds, c.spp_to_target);
+	c.render_to_target = linear_fit_at(c.spp, c.render_seconds, c.spp_to_target);
 	c.efficiency = median(efficiency);
 	c.ms_per_spp = ms.back(); // at the largest spp, where the fixed costs weigh least
 	return c;
@@ -253,8 +271,8 @@ int run(const Options& o) {
 	         "load average (1, 5, 15 min) " + load_before + " before, " + load_after + " after.\n\n";
 	table += "| renderer | reference | relMSE at";
 	for (uint32_t spp : o.ladder) table += " " + std::to_string(spp);
-	table += " spp | slope | command s at each spp | render s at each spp | ms per spp | to 1e-3 (command) | "
-	         "to 1e-3 (render) | efficiency (render) |\n|---|---|---|---|---|---|---|---|---|---|\n";
+	table += " spp | slope | command s at each spp | render s at each spp | ms per spp | spp to 1e-3 | "
+	         "s to 1e-3 (command) | s to 1e-3 (render) | efficiency (render) |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
 	for (int a : {1, 0})
 		for (int k = 0; k < 2; k++) {
 			const Curve& c = curves[k][a];
@@ -266,7 +284,7 @@ int run(const Options& o) {
 			}
 			table += std::string("| ") + renderer_name(RENDERERS[k]) + " | " + (a ? "Cycles'" : "ours") + " | " + errors +
 			         " | " + fixed(c.slope, 2) + " | " + command + " | " + render + " | " + fixed(c.ms_per_spp, 1) +
-			         " | " + fixed(c.command_to_target, 2) + " s | " + fixed(c.render_to_target, 2) + " s | " +
+			         " | " + fixed(c.spp_to_target, 0) + " | " + fixed(c.command_to_target, 2) + " s | " + fixed(c.render_to_target, 2) + " s | " +
 			         fixed(c.efficiency, 0) + " |\n";
 		}
 	const Curve &ours = curves[0][1], &cycles = curves[1][1];
@@ -278,8 +296,9 @@ int run(const Options& o) {
 	         fixed(ours.efficiency / cycles.efficiency, 2) + "x. The references differ by relMSE " +
 	         general(references_apart) + ".\n\n(relMSE: mean over the renders, minus the reference's own noise; "
 	         "command: wall time from the command's start to its exit, median; render: the time the renderer reports "
-	         "(ours: rendering; Cycles: the render call, scene sync and BVH included); to 1e-3: from the line fitted to "
-	         "log relMSE on log seconds; efficiency: 1 / (relMSE x render seconds), median over the ladder.)\n";
+	         "(ours: rendering; Cycles: the render call, scene sync and BVH included); spp to 1e-3: where the line fitted to log "
+	         "relMSE on log spp reaches 1e-3; s to 1e-3: the line fitted to seconds on spp (a fixed cost plus a cost "
+	         "per sample) at that spp; ms per spp: render time / spp at the largest spp; efficiency: 1 / (relMSE x render seconds), median over the ladder.)\n";
 	std::printf("\n%s", table.c_str());
 	std::ofstream(o.out + "/cycles_time_to_error.md") << table;
 
