@@ -38,8 +38,9 @@ const char* const USAGE =
 	"threads (default 2). Per scene: the whole image's mean per channel, Cycles / ours - 1 with its standard\n"
 	"error; the relMSE between the two images and what their noise alone would give; the means of a 4 x 4\n"
 	"grid of regions per channel, z = (Cycles - ours) / standard error, and how many exceed the critical |z|\n"
-	"(Sidak, 1% per scene). --cycles-defaults: also the first scene with each group of Cycles' own defaults\n"
-	"that render_in_cycles.py overrides (bounces, clamp, light-threshold, filter), alone and all together.\n"
+	"(Sidak, 1% per scene). --cycles-defaults: first, scenes/cornell_box.json with each group of Cycles' own\n"
+	"defaults that render_in_cycles.py overrides (bounces, clamp, light-threshold, filter), alone and all\n"
+	"together. The render times are of runs that share the machine: no speed measurement (./lab bench cycles).\n"
 	"Writes DIR/cycles_accuracy.md (default DIR: bench/results) and both images of each scene as EXR under\n"
 	"the build directory.\n";
 
@@ -172,6 +173,38 @@ int run(const Options& o) {
 		"beyond |z| " + fmt("%.2f", critical) + " of " + std::to_string(GRID * GRID * 3) +
 		" | largest |z| (its difference) | render s, ours / Cycles |\n|---|---|---|---|---|---|\n";
 	auto start = std::chrono::steady_clock::now();
+	std::string variants_table;
+	// Rewritten after every row, so that a run cut short keeps what it measured.
+	auto write_table = [&] {
+		std::string header = "Each scene at its own film and max depth, " + std::to_string(o.spp) +
+		                     " spp per renderer (two halves, seeds 1 and 2), " + std::to_string(o.threads) +
+		                     " threads; load average " + load_before + " at the start, " + load_average() + " at this row; " +
+		                     fmt("%.0f s so far.", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()) +
+		                     "\n\n";
+		std::ofstream(o.out + "/cycles_accuracy.md") << header << variants_table << table;
+	};
+	if (o.cycles_defaults) {
+		const std::string scene = "scenes/cornell_box.json";
+		std::printf("%s with Cycles' own defaults:\n", scene.c_str());
+		variants_table = "`" + scene + "` with Cycles' own defaults for what render_in_cycles.py matches, against ours:\n\n"
+		                 "| Cycles' default kept | Cycles / ours − 1, whole image, R / G / B (%) | relMSE (noise alone) |\n|---|---|---|\n";
+		Rendered ours = render_halves(Renderer::lab, scene, o, work_dir);
+		std::vector<std::vector<std::string>> variants{
+			{}, {"bounces"}, {"clamp"}, {"light-threshold"}, {"filter"}, {"bounces", "clamp", "light-threshold", "filter"}};
+		for (const auto& variant : variants) {
+			std::string label;
+			for (const std::string& v : variant) label += (label.empty() ? "" : ", ") + v;
+			Rendered cycles = render_halves(Renderer::cycles, scene, o, work_dir, variant);
+			Comparison c = compare(ours.image, cycles.image);
+			std::string row = "| " + (label.empty() ? std::string("none (matched)") : label) + " | " + c.whole_means + " | " +
+			                  fmt("%.3g (%.3g)", c.rel_mse, c.rel_mse_noise) + " |\n";
+			variants_table += row;
+			std::printf("%s", row.c_str());
+			std::fflush(stdout);
+			write_table();
+		}
+		variants_table += "\n";
+	}
 	for (const std::string& scene : o.scenes) {
 		std::string name = std::filesystem::path(scene).stem().string();
 		std::printf("%s ...", name.c_str());
@@ -193,34 +226,10 @@ int run(const Options& o) {
 			std::printf(" not compared: %s\n", e.what());
 		}
 		std::fflush(stdout);
+		write_table();
 	}
-	if (o.cycles_defaults) {
-		const std::string& scene = o.scenes.front();
-		std::printf("\n%s with Cycles' own defaults:\n", scene.c_str());
-		table += "\n`" + scene + "` with Cycles' own defaults for what render_in_cycles.py matches, against ours:\n\n"
-		         "| Cycles' default kept | Cycles / ours − 1, whole image, R / G / B (%) | relMSE (noise alone) |\n|---|---|---|\n";
-		Rendered ours = render_halves(Renderer::lab, scene, o, work_dir);
-		std::vector<std::vector<std::string>> variants{
-			{"bounces"}, {"clamp"}, {"light-threshold"}, {"filter"}, {"bounces", "clamp", "light-threshold", "filter"}};
-		for (const auto& variant : variants) {
-			std::string label;
-			for (const std::string& v : variant) label += (label.empty() ? "" : ", ") + v;
-			Rendered cycles = render_halves(Renderer::cycles, scene, o, work_dir, variant);
-			Comparison c = compare(ours.image, cycles.image);
-			std::string row = "| " + label + " | " + c.whole_means + " | " + fmt("%.3g (%.3g)", c.rel_mse, c.rel_mse_noise) + " |\n";
-			table += row;
-			std::printf("%s", row.c_str());
-			std::fflush(stdout);
-		}
-	}
-	std::string load_after = load_average();
 	std::filesystem::remove_all(work_dir);
-	std::string header = "Each scene at its own film and max depth, " + std::to_string(o.spp) +
-	                     " spp per renderer (two halves, seeds 1 and 2), " + std::to_string(o.threads) +
-	                     " threads; load average " + load_before + " before, " + load_after + " after; " +
-	                     fmt("%.0f s.", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()) +
-	                     "\n\n";
-	std::ofstream(o.out + "/cycles_accuracy.md") << header << table;
+	write_table();
 	std::printf("\nwrote %s/cycles_accuracy.md and the images in %s\n", o.out.c_str(), o.images.c_str());
 	return 0;
 }
