@@ -240,7 +240,8 @@ int run(const Options& o) {
 	std::ofstream csv(csv_path);
 	csv << "renderer,spp,seed,command_seconds,render_seconds,relmse_vs_ours,relmse_vs_cycles\n";
 	std::vector<Run_Result> results[2];
-	std::printf("rendering %zu images per renderer, taking turns...", jobs.size());
+	std::string load_ladder = load_average();
+	std::printf("rendering %zu images per renderer, taking turns (load average %s)...", jobs.size(), load_ladder.c_str());
 	std::fflush(stdout);
 	auto start = std::chrono::steady_clock::now();
 	for (size_t j = 0; j < jobs.size(); j++) {
@@ -268,7 +269,8 @@ int run(const Options& o) {
 	std::string table;
 	table += "Scene `" + o.scene + "`, film as in the scene, max depth " + std::to_string(o.max_depth) + ", " +
 	         std::to_string(o.threads) + " threads; " + std::to_string(o.repeats) + " renders per spp and renderer; " +
-	         "load average (1, 5, 15 min) " + load_before + " before, " + load_after + " after.\n\n";
+	         "load average (1, 5, 15 min) " + load_before + " at the start, " + load_ladder + " when the timed renders began, " +
+	         load_after + " at the end.\n\n";
 	table += "| renderer | reference | relMSE at";
 	for (uint32_t spp : o.ladder) table += " " + std::to_string(spp);
 	table += " spp | slope | command s at each spp | render s at each spp | ms per spp | spp to 1e-3 | "
@@ -306,7 +308,7 @@ int run(const Options& o) {
 	plot.title = "Time to relMSE 1e-3: the lab's reference renderer beside Blender Cycles 3.4, one run";
 	plot.subtitle = o.scene + ", max depth " + std::to_string(o.max_depth) + ", " + std::to_string(o.threads) +
 	                " threads; against Cycles' " + std::to_string(o.reference_spp) + "-spp reference; load " +
-	                load_before + " -> " + load_after;
+	                load_ladder + " -> " + load_after;
 	plot.x_label = "seconds";
 	plot.columns = 2;
 	for (int timing = 0; timing < 2; timing++) {
