@@ -10,8 +10,8 @@
 #
 # Correspondences (lab -> Cycles):
 # - coordinates: kept as they are (+y up); nothing in Cycles depends on the up axis except the
-#   environment lookup, which is built here from the lab's own formula (framework/env_light.h).
-# - camera: Camera::look_at's frame (framework/camera.cpp) is Blender's camera frame (looks down -z,
+#   environment lookup, which is built here from the lab's own formula (framework/api/env_light.h).
+# - camera: Camera::look_at's frame (framework/scene/camera.cpp) is Blender's camera frame (looks down -z,
 #   +y up); the vertical field of view is the sensor's, fitted vertically.
 # - max_depth D (a surface scatters while the ray's depth < D; D = 1 is direct light) is Cycles'
 #   max_bounces D - 1 (0 is direct light), for every kind of bounce.
@@ -20,7 +20,7 @@
 # - emission: one-sided, from the front (the side the normal points to): Emission x not-backfacing.
 # - spheres (analytic in the lab): a latitude-longitude mesh with the exact sphere normal at every
 #   vertex, smooth-shaded; SPHERE_SEGMENTS sets how fine.
-# - mesh normals: the lab's area-weighted vertex normals (framework/mesh_builder.h) or the scene's,
+# - mesh normals: the lab's area-weighted vertex normals (framework/scene/mesh_builder.h) or the scene's,
 #   set as custom normals; flat_shading: face normals.
 # - environment: constant -> Background colour; image -> the equirectangular lookup of env_light.h
 #   (u = atan2(z, x) / 2 pi, v = acos(y) / pi, v = 0 the top row), bilinear, times "scale".
@@ -33,6 +33,7 @@ import time
 
 import bpy
 import numpy as np
+from mathutils import Matrix
 
 SPHERE_SEGMENTS = 512 # around the equator; half as many rings from pole to pole
 
@@ -110,7 +111,7 @@ def read_obj(path, where):
 
 
 def area_weighted_normals(positions, triangles):
-	# framework/mesh_builder.h: n(v) = normalize(sum over the triangles around v of cross(p1 - p0, p2 - p0)).
+	# framework/scene/mesh_builder.h: n(v) = normalize(sum over the triangles around v of cross(p1 - p0, p2 - p0)).
 	p0, p1, p2 = (positions[triangles[:, k]] for k in range(3))
 	area = np.cross(p1 - p0, p2 - p0)
 	sums = np.zeros_like(positions)
@@ -159,7 +160,7 @@ def mesh_data(obj, scene_dir, where):
 
 def to_world(positions, triangles, normals, m):
 	# Baked into the vertices: points by m, normals by its inverse transpose. A mirroring transform
-	# (det < 0) turns the object inside out (framework/instance.cpp): its normals turn around, and
+	# (det < 0) turns the object inside out (framework/scene/instance.cpp): its normals turn around, and
 	# stay on the side of the transformed triangles' face normals.
 	linear = m[:3, :3]
 	positions = positions @ linear.T + m[:3, 3]
@@ -296,7 +297,7 @@ def make_world(spec, scene_dir):
 # ---- Camera and render settings -----------------------------------------------------------------
 
 def look_at(position, target, up):
-	# Camera::look_at (framework/camera.cpp): z from the target back to the eye, x = up x z, y = z x x.
+	# Camera::look_at (framework/scene/camera.cpp): z from the target back to the eye, x = up x z, y = z x x.
 	position, target, up = (np.asarray(v, dtype=np.float64) for v in (position, target, up))
 	z = position - target
 	z /= np.linalg.norm(z)
@@ -315,7 +316,6 @@ def add_camera(spec, scene_extent):
 	camera.clip_start = 1e-6 * scene_extent # the lab's camera rays start at distance 0 and never end
 	camera.clip_end = 1e6 * scene_extent
 	obj = bpy.data.objects.new("camera", camera)
-	from mathutils import Matrix
 	obj.matrix_world = Matrix(look_at(spec["position"], spec["target"], spec.get("up", [0, 1, 0])).tolist())
 	bpy.context.scene.collection.objects.link(obj)
 	bpy.context.scene.camera = obj
@@ -323,7 +323,7 @@ def add_camera(spec, scene_extent):
 
 def configure_render(scene, width, height, spp, seed, max_depth, threads):
 	if max_depth < 1:
-		raise SceneError(f"film.max_depth: Cycles cannot show emitters alone (max_depth 0); expected 1 or more")
+		raise SceneError("film.max_depth: Cycles cannot show emitters alone (max_depth 0); expected 1 or more")
 	scene.render.engine = "CYCLES"
 	scene.render.resolution_x, scene.render.resolution_y, scene.render.resolution_percentage = width, height, 100
 	scene.render.pixel_aspect_x = scene.render.pixel_aspect_y = 1.0
