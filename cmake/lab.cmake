@@ -34,7 +34,7 @@ set(LAB_PRECOMPILED_HEADERS pathtracer.h shapes.h bvh.h material.h env_light.h)
 
 # lab_student_object(<target> <source>): a student's task file, compiled for a quick verdict after
 # an edit (a plain object, no link-time optimization, the precompiled headers), where the compiler
-# sees only the system, the student's API (framework/api/) and this file (tools/compile-student). A
+# sees only the system, the student's API (framework/api/) and this file (grading/bin/compile-student). A
 # precompiled header stands for the headers it was made of, which the object's dependency file then
 # does not list: the object depends on it instead.
 function(lab_student_object target source)
@@ -46,7 +46,7 @@ function(lab_student_object target source)
 	set_property(SOURCE ${source} APPEND PROPERTY OBJECT_DEPENDS ${precompiled})
 	add_dependencies(${target} precompiled_headers)
 	set_property(TARGET ${target} PROPERTY CXX_COMPILER_LAUNCHER
-		${PROJECT_SOURCE_DIR}/tools/compile-student ${PROJECT_SOURCE_DIR}/framework/api --precompiled ${LAB_PRECOMPILED_DIR})
+		${PROJECT_SOURCE_DIR}/grading/bin/compile-student ${PROJECT_SOURCE_DIR}/framework/api --precompiled ${LAB_PRECOMPILED_DIR})
 endfunction()
 
 # The seven task files. Each is compiled once per implementation (student/ and reference/) into an
@@ -105,6 +105,7 @@ function(lab_library name)
 	set_target_properties(${name}_archive PROPERTIES IMPORTED_LOCATION ${archive})
 	add_library(${name} INTERFACE)
 	target_link_libraries(${name} INTERFACE framework_headers "$<LINK_LIBRARY:WHOLE_ARCHIVE,${name}_archive>")
+	set_property(TARGET ${name} PROPERTY LAB_PREBUILT_ARCHIVE ${archive}) # lab_link_inputs
 endfunction()
 
 # lab_write_shipped_compiled(): writes <build>/shipped_compiled.txt, a line "<library> <source>" for
@@ -115,24 +116,27 @@ function(lab_write_shipped_compiled)
 	file(WRITE ${CMAKE_BINARY_DIR}/shipped_compiled.txt "${text}\n")
 endfunction()
 
-# lab_link_tasks(<target> <impl> [TASK<n> <impl_n>]...): link task <n> from <impl_n> where one is
-# named and every other task from <impl>, e.g. lab_link_tasks(grader_task3_student reference TASK3
-# student); then the framework, with the accelerator that suits the choice (framework/accel/
-# accelerator.h): the fast one only where tasks 2 and 3 are both the reference, else the plain one,
-# which is task 3's BVH::hit, so that a student's code runs end to end; and the NEE integrator
-# only where task 4 is the reference (framework/CMakeLists.txt). ACCELERATOR fast|plain overrides the
-# accelerator's choice: only to prove that a test notices the wrong one.
-function(lab_link_tasks target impl)
+# The composition rule, written here alone: which parts make a program whose task <n> comes from
+# <impl_n> where one is named and every other task from <impl>. lab_composition(<out> <impl>
+# [TASK<n> <impl_n>]... [ACCELERATOR fast|plain]) sets <out> to those parts' targets: task<n>_<impl_n>
+# for each task; the framework's accelerator that suits the choice (framework/api/accelerator.h):
+# the fast one only where tasks 2 and 3 are both the reference, else the plain one, which is task 3's
+# BVH::hit, so that a student's code runs end to end; and the NEE integrator only where task 4 is the
+# reference (framework/CMakeLists.txt), else the one that refuses. ACCELERATOR overrides the
+# accelerator's choice: only to prove that a test notices the wrong one. lab_link_tasks links a
+# target with them; the grading kit (grading/CMakeLists.txt) writes them out for grade-task.
+function(lab_composition out impl)
 	cmake_parse_arguments(PARSE_ARGV 2 arg "" "TASK1;TASK2;TASK3;TASK4;TASK5;TASK6;TASK7;ACCELERATOR" "")
 	if(arg_UNPARSED_ARGUMENTS)
-		message(FATAL_ERROR "lab_link_tasks(${target}): unexpected arguments ${arg_UNPARSED_ARGUMENTS}")
+		message(FATAL_ERROR "lab_composition: unexpected arguments ${arg_UNPARSED_ARGUMENTS}")
 	endif()
+	set(parts "")
 	foreach(n RANGE 1 7)
 		set(impl_${n} ${impl})
 		if(arg_TASK${n})
 			set(impl_${n} ${arg_TASK${n}})
 		endif()
-		target_link_libraries(${target} PRIVATE task${n}_${impl_${n}})
+		list(APPEND parts task${n}_${impl_${n}})
 	endforeach()
 	set(accelerator ${arg_ACCELERATOR})
 	if(NOT accelerator)
@@ -147,5 +151,31 @@ function(lab_link_tasks target impl)
 	if(impl_4 STREQUAL "reference")
 		set(integrator nee)
 	endif()
-	target_link_libraries(${target} PRIVATE accelerator_${accelerator} integrator_${integrator} framework)
+	list(APPEND parts accelerator_${accelerator} integrator_${integrator})
+	set(${out} ${parts} PARENT_SCOPE)
+endfunction()
+
+# lab_link_tasks(<target> <impl> [TASK<n> <impl_n>]... [ACCELERATOR fast|plain]): link the parts of
+# lab_composition, then the framework, e.g. lab_link_tasks(subject_task3_student reference TASK3
+# student).
+function(lab_link_tasks target)
+	lab_composition(parts ${ARGN})
+	target_link_libraries(${target} PRIVATE ${parts} framework)
+endfunction()
+
+# lab_link_inputs(<out> <target>...): the linker's inputs for these parts, as a generator expression
+# for a command line (the grading kit, grading/CMakeLists.txt): an object library's objects, or a
+# prebuilt archive (lab_library in a student release) linked whole, as lab_link_tasks links it.
+function(lab_link_inputs out)
+	set(inputs "")
+	foreach(part IN LISTS ARGN)
+		get_target_property(archive ${part} LAB_PREBUILT_ARCHIVE)
+		if(archive)
+			list(APPEND inputs "-Wl,--whole-archive ${archive} -Wl,--no-whole-archive")
+		else()
+			list(APPEND inputs "$<JOIN:$<TARGET_OBJECTS:${part}>, >")
+		endif()
+	endforeach()
+	list(JOIN inputs " " inputs)
+	set(${out} "${inputs}" PARENT_SCOPE)
 endfunction()

@@ -18,7 +18,7 @@
 #   TEST_CASEs are found where "TEST_CASE(" starts a line (after indentation), with the title and
 #   the tags as string literals.
 #
-# Script mode, for tests (tests/report/test_case_ids_check.sh):
+# Script mode, for tests (tests/grading/test_case_ids_check.sh):
 #   cmake -DROOT=<dir> [-DRUBRIC=<file>] -P cmake/test_case_ids.cmake
 if(CMAKE_SCRIPT_MODE_FILE STREQUAL CMAKE_CURRENT_LIST_FILE)
 	cmake_minimum_required(VERSION 3.24) # the policies of the lab's CMakeLists.txt

@@ -29,14 +29,17 @@ cmake --build "$objects" --parallel "$jobs" --target "${libraries[@]/%/_archive}
 
 # The tree: everything but reference/, the framework's code that ships compiled, the instructors'
 # tests (stress, images, crosscheck, fuzz, export, isolation, mutants, security, class, gradescope;
-# the mutants' edits quote the reference) and the benchmarks. tests/judge runs the graders; tests/report is the
-# grade report (./lab report), whose test in Chromium is registered only where reference/ exists.
-mkdir -p "$dest/tests" "$dest/prebuilt" "$dest/tools"
+# the mutants' edits quote the reference, and the grading product's own tests) and the benchmarks;
+# of grading/, what ./lab grade and ./lab report run: the judge's runtime, the grade report, and the
+# scripts that build a student's task file and grade it (not the instructors' scripts, rubric and
+# README).
+mkdir -p "$dest/tests" "$dest/prebuilt" "$dest/grading/bin"
 (cd "$root" && cp -R CMakeLists.txt CMakePresets.json lab cmake framework tasks student scenes handouts "$dest/")
 for source in "${shipped_compiled[@]}"; do rm -f "$dest/$source"; done
 find "$dest/framework" -type d -empty -delete
-cp "$root/tools/compile-student" "$root/tools/sandboxed" "$dest/tools/"
-(cd "$root/tests" && cp -R CMakeLists.txt judge support framework task1 task2 task3 task4 task5 task6 task6_nee task7 report "$dest/tests/")
+(cd "$root/grading" && cp -R CMakeLists.txt judge report "$dest/grading/" &&
+	cp bin/grade-task bin/compile-student bin/sandboxed "$dest/grading/bin/")
+(cd "$root/tests" && cp -R CMakeLists.txt support framework task1 task2 task3 task4 task5 task6 task6_nee task7 "$dest/tests/")
 for library in "${libraries[@]}"; do cp "$objects/prebuilt/lib$library.a" "$dest/prebuilt/"; done
 
 # The students' README: the "For students" section of the instructors' README.

@@ -18,7 +18,7 @@ minimum=4
 export KIT=$kit
 
 start=$SECONDS
-"$root/tools/grade-class" "$out/class/submissions" --out "$out/graded" --jobs 2 >"$out/grade-class.log" 2>&1 ||
+"$root/grading/bin/grade-class" "$out/class/submissions" --out "$out/graded" --jobs 2 >"$out/grade-class.log" 2>&1 ||
 	{ tail -20 "$out/grade-class.log" >&2; fail "grade-class failed"; }
 seconds=$((SECONDS - start))
 count=$(find "$out/class/submissions" -mindepth 1 -maxdepth 1 -type d | wc -l)
@@ -27,7 +27,7 @@ bash "$here/check_gradebook.sh" "$root/grading/rubric.json" "$out/class/expected
 cp "$out/graded/gradebook.csv" "$out/gradebook.csv"
 
 # A rerun resumes: nothing to grade, the same gradebook.
-"$root/tools/grade-class" "$out/class/submissions" --out "$out/graded" --jobs 2 >"$out/rerun.log" 2>&1 ||
+"$root/grading/bin/grade-class" "$out/class/submissions" --out "$out/graded" --jobs 2 >"$out/rerun.log" 2>&1 ||
 	fail "the rerun of grade-class failed"
 cmp -s "$out/gradebook.csv" "$out/graded/gradebook.csv" || fail "the rerun changed the gradebook"
 [ -z "$(find "$out/graded/submissions" -newer "$out/gradebook.csv" -name results.json)" ] ||
@@ -37,7 +37,7 @@ cmp -s "$out/gradebook.csv" "$out/graded/gradebook.csv" || fail "the rerun chang
 id=mistake_task4_no_offset # in both classes
 strip_time() { grep -v '"execution_time"' "$1"; }
 strip_time "$out/graded/submissions/$id/results.json" >"$out/first.json"
-"$root/tools/grade-submission" "$out/class/submissions/$id" --out "$out/graded/submissions/$id" >/dev/null 2>&1 ||
+"$root/grading/bin/grade-submission" "$out/class/submissions/$id" --out "$out/graded/submissions/$id" >/dev/null 2>&1 ||
 	fail "grading $id again failed"
 strip_time "$out/graded/submissions/$id/results.json" >"$out/second.json"
 cmp -s "$out/first.json" "$out/second.json" || { diff "$out/first.json" "$out/second.json" | head -20 >&2; fail "$id: a second grading differs"; }

@@ -17,7 +17,7 @@ export LAB_BUILD_DIR=${kit%/grading/kit.env}
 parallel --will-cite --sshlogin 2/: --env LAB_BUILD_DIR \
 	"$root/lab grade-submission {} --out $dest/submissions/{/} >$dest/logs/{/}.log 2>&1 || echo failed >$dest/logs/{/}.error" \
 	::: "$out/class/submissions"/*
-"$root/tools/gradebook" "$dest" >/dev/null
+"$root/grading/bin/gradebook" "$dest" >/dev/null
 echo "GNU parallel test: graded in $((SECONDS - start)) s"
 cmp -s "$out/gradebook.csv" "$dest/gradebook.csv" ||
 	{ diff "$out/gradebook.csv" "$dest/gradebook.csv" | head >&2; fail "the gradebook differs from grade-class's"; }

@@ -85,7 +85,7 @@ sbatch --wait --array="0-$((${#submissions[@]} - 1))" --output="$cluster/log/job
 	fail "sbatch failed: $(cat "$cluster/sbatch.log")"
 echo "Slurm test: $(head -1 "$cluster/sbatch.log"), ${#submissions[@]} array tasks, done in $((SECONDS - start)) s"
 cp "$cluster/log/slurmctld.log" "$dest/slurmctld.log"
-"$root/tools/gradebook" "$dest" >/dev/null
+"$root/grading/bin/gradebook" "$dest" >/dev/null
 cmp -s "$out/gradebook.csv" "$dest/gradebook.csv" ||
 	{ diff "$out/gradebook.csv" "$dest/gradebook.csv" | head >&2; fail "the gradebook differs from grade-class's"; }
 echo "Slurm test: the gradebook equals grade-class's"

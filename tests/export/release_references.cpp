@@ -2,7 +2,7 @@
 // export). Scanned: the README and the handouts (whole text), the output of `./lab help`, and the
 // comments of the shipped code (.h, .cpp, .sh; not the CMake files, whose notes describe the build
 // of both trees, the instructors' and the release). Checked, in each:
-//   - repository paths (framework/api/camera.h, scenes/graded/, tests/judge/protocol.h, ...): the file or
+//   - repository paths (framework/api/camera.h, scenes/graded/, grading/judge/protocol.h, ...): the file or
 //     folder exists (for a pattern such as student/task*.cpp, a name that starts like it); in a
 //     Markdown link or image, the target exists relative to the document, and a #fragment names a
 //     heading of the target;

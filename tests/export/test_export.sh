@@ -35,6 +35,10 @@ while read -r library source; do
 done <"$manifest"
 # The mutants' edits quote the reference line by line (tests/mutants/README.md).
 [ ! -e "$release/tests/mutants" ] || fail "the release has the instructors' mutants, tests/mutants/"
+# Of grading/, what ./lab grade and ./lab report run; not the instructors' scripts, rubric or README.
+for file in grading/bin/grade-submission grading/bin/grade-class grading/bin/make-autograder grading/rubric.json grading/README.md; do
+	[ ! -e "$release/$file" ] || fail "the release has the instructors' $file"
+done
 # Code lines (not comments) of reference/ long enough to be distinctive, absent from the stubs and
 # not quoted on purpose by a handout. A single line can recur by coincidence (a test oracle does
 # the same thing); three in one file mean copied code.
@@ -121,14 +125,14 @@ grep -Eq "test cases: *[0-9]+ \| *([0-9]+ passed \| *)?[1-9][0-9]* failed" "$tmp
 	fail "the grader did not run to its summary with failed test cases (a crash?)"
 echo "export test: the release builds, and its task-1 grader fails on the stub as it should"
 
-# The grade report's pieces work in the release: the task-1 grader records its results and images,
-# and grade_report turns them into a page that shows task 1 failing (./lab report runs all seven).
-status=0
-(cd "$release" && LAB_REPORT_DIR=$tmp/report LAB_REPORT_TASK=1 build/tests/judge_task1 \
-	--subject build/tests/judge/subject_task1_student) >"$tmp/report.log" 2>&1 || status=$?
-[ "$status" -ne 0 ] || fail "the task-1 grader passed on the stub with LAB_REPORT_DIR set"
-echo "$status" >"$tmp/report/task1.exit"
-"$release/build/tests/report/grade_report" "$tmp/report" >/dev/null 2>&1 || fail "grade_report failed in the release"
+# The grade report's pieces work in the release: the driver ./lab report runs for each task
+# (grading/bin/grade-task) has the task-1 grader record its results and images, and grade_report
+# turns them into a page that shows task 1 failing.
+KIT=$release/build/grading/kit.env "$release/grading/bin/grade-task" 1 --out "$tmp/report" >"$tmp/report.log" 2>&1 ||
+	fail "grade-task failed in the release: $(tail -5 "$tmp/report.log")"
+[ "$(cat "$tmp/report/task1.exit" 2>/dev/null)" != 0 ] ||
+	fail "the task-1 grader passed on the stub, or did not run: $(tail -5 "$tmp/report/task1.log" "$tmp/report/task1.build.log" 2>/dev/null)"
+"$release/build/grading/report/grade_report" "$tmp/report" >/dev/null 2>&1 || fail "grade_report failed in the release"
 grep -q '<h2><span class="badge FAIL">FAIL</span> Task 1: ' "$tmp/report/index.html" ||
 	fail "the release's grade report does not show task 1 failing"
 [ -s "$tmp/report/task1_eye_bunny_z.png" ] || fail "the release's task-1 grader wrote no heat map for the report"

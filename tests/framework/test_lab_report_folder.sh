@@ -5,8 +5,9 @@
 #   (b) a new or empty folder becomes a report folder;
 #   (c) a second report removes the files of the first one and keeps the files that someone else
 #       put there, even under names like a report's (task1_notes.txt).
-# The graders, grade_report and cmake are stand-ins (in a temporary build folder and on PATH), so
-# the test runs ./lab's own code in a second, without building anything.
+# The graders, grade_report, the grading kit that names them and cmake are stand-ins (in a temporary
+# build folder and on PATH), so the test runs ./lab's own code and grading/bin/grade-task in a
+# second, without building anything.
 #
 # usage: test_lab_report_folder.sh REPOSITORY_ROOT
 set -euo pipefail
@@ -19,7 +20,7 @@ fail() { echo "lab report folder test: $*" >&2; exit 1; }
 # Stand-ins: cmake does nothing; judge N writes task<N>.json and an image named after the run
 # (so that two runs write different files); grade_report writes index.html and prints its path.
 build=$tmp/build
-mkdir -p "$tmp/bin" "$build/tests/report"
+mkdir -p "$tmp/bin" "$build/tests" "$build/grading"
 touch "$build/CMakeCache.txt"
 printf '#!/bin/sh\nexit 0\n' >"$tmp/bin/cmake"
 cat >"$tmp/grader" <<'GRADER'
@@ -28,9 +29,15 @@ echo '{}' >"$LAB_REPORT_DIR/task$LAB_REPORT_TASK.json"
 echo image >"$LAB_REPORT_DIR/task${LAB_REPORT_TASK}_cornell_run$(cat "$LAB_TEST_RUN").png"
 exit 1
 GRADER
-for n in 1 2 3 4 5 6 7; do cp "$tmp/grader" "$build/tests/judge_task$n"; done
-printf '#!/bin/sh\necho page >"$1/index.html"\necho "$1/index.html"\n' >"$build/tests/report/grade_report"
-chmod +x "$tmp/bin/cmake" "$build"/tests/judge_task* "$build/tests/report/grade_report"
+echo "LAB_BUILD_DIR='$build'" >"$build/grading/kit.env"
+for n in 1 2 3 4 5 6 7; do
+	cp "$tmp/grader" "$build/tests/judge_task$n"
+	echo "LAB_JUDGE_$n='$build/tests/judge_task$n'" >>"$build/grading/kit.env"
+	echo "LAB_STUDENT_SUBJECT_$n='$build/subject_task${n}_student'" >>"$build/grading/kit.env"
+done
+printf '#!/bin/sh\necho page >"$1/index.html"\necho "$1/index.html"\n' >"$build/grade_report"
+echo "LAB_GRADE_REPORT='$build/grade_report'" >>"$build/grading/kit.env"
+chmod +x "$tmp/bin/cmake" "$build"/tests/judge_task* "$build/grade_report"
 
 # report DIR RUN: ./lab report DIR as run number RUN; its status, stdout and stderr in $tmp/lab.*
 report() {

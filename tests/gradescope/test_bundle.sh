@@ -17,17 +17,18 @@ rm -rf "$out"
 mkdir -p "$out"
 
 start=$SECONDS
-LAB_EXPORT_BUILD_DIR=$out/objects "$root/tools/make-autograder" "$out/autograder.zip" --seed 4242 --allow-unsandboxed >/dev/null ||
+LAB_EXPORT_BUILD_DIR=$out/objects "$root/grading/bin/make-autograder" "$out/autograder.zip" --seed 4242 --allow-unsandboxed >/dev/null ||
 	fail "./lab autograder failed"
 unzip -Z1 "$out/autograder.zip" >"$out/bundle.txt"
 has() { grep -qx "$1" "$out/bundle.txt" || fail "the bundle has no $1"; }
 has setup.sh
 has run_autograder
-has tools/grade-submission
+has grading/bin/grade-submission
 has grading/rubric.json
 has grading/seed
 has grading/allow-unsandboxed
-has tools/sandboxed
+has grading/bin/sandboxed
+has grading/bin/grade-task
 unzip -Z "$out/autograder.zip" grading/seed | grep -q '^-rw-------' || fail "grading/seed is readable by others than its owner"
 for n in 1 2 3 4 5 6 7; do has "prebuilt/libtask${n}_reference.a"; done
 solution_sources=$(grep -xF -f <(cut -d' ' -f2 "$out/objects/shipped_compiled.txt") "$out/bundle.txt" || true)

@@ -1,6 +1,6 @@
 # Mutants as edits (tests/mutants/README.md): lab_mutant_source writes a mutant's source from its
-# .mutant file and the task file it edits. Used at configure time by lab_mutants()
-# (tests/judge/CMakeLists.txt), and by tests/mutants/apply_mutant.cmake in script mode.
+# .mutant file and the task file it edits. Used at configure time by tests/mutants/CMakeLists.txt,
+# and by tests/mutants/apply_mutant.cmake in script mode.
 #
 # Every text is handled as one whole string (string(FIND), string(SUBSTRING), quoted arguments),
 # never as a list: C++ is full of ';', which a list would split at.

@@ -1,5 +1,5 @@
 // The security suite (label security): one hostile student file per threat (tests/security/hostile/),
-// each graded through the normal path (tools/grade-submission: sandboxed compile, subject in
+// each graded through the normal path (grading/bin/grade-submission: sandboxed compile, subject in
 // bubblewrap, verdicts by the judge) and required to earn nothing for its task, with the reason in
 // the grade report. Where a threat has a side effect outside the grade (a file rewritten, a process
 // left behind, a connection made), that it did not happen is checked too.
@@ -110,7 +110,7 @@ std::map<int, Grade> grade_files(const Temp_Dir& dir, const std::map<int, std::s
 	REQUIRE(kit != nullptr);
 	// LAB_SANDBOX=process-limits (the suite's other modes): grade as where bubblewrap cannot run.
 	std::string allow = std::getenv("LAB_SANDBOX") ? " --allow-unsandboxed" : "";
-	std::string command = "KIT='" + std::string(kit) + "' tools/grade-submission '" + submission.string() +
+	std::string command = "KIT='" + std::string(kit) + "' grading/bin/grade-submission '" + submission.string() +
 	                      "' --out '" + out.string() + "' " + options + allow + " > '" + dir.file("grading.log") +
 	                      "' 2>&1";
 	long largest_kib = 0;
@@ -213,7 +213,7 @@ TEST_CASE("leaving the reference to the linker earns nothing", "[security]") {
 }
 
 TEST_CASE("a traversal that tests objects where the count cannot see earns nothing for its traversal", "[security]") {
-	// The judge counts the objects BVH::hit tests by answering each itself (tests/judge/protocol.h,
+	// The judge counts the objects BVH::hit tests by answering each itself (grading/judge/protocol.h,
 	// BVH_Instances): the subject holds their boxes alone. The hostile file is the reference but for
 	// its BVH<Instance>::hit, whose objects are correct where they are real (the graded image).
 	std::string reference = read_file("reference/task3_bvh.cpp");
@@ -402,7 +402,7 @@ TEST_CASE("a submission whose every function hangs gets 0 on every task, at most
 		CHECK_THAT(graded.messages, Catch::Contains("first: it did not finish") ||
 		                                Catch::Contains("first: your code did not finish"));
 	}
-	// A task waits for at most two hung requests (tests/judge/subject.h, Hang_Record); compiling,
+	// A task waits for at most two hung requests (grading/judge/subject.h, Hang_Record); compiling,
 	// starting subjects and the judge's own work take the rest, a few seconds a task. With the
 	// default limit that is 7 x (60 + 8) s: within Gradescope's 10 minutes.
 	double seconds = grades[1].seconds;
@@ -412,7 +412,7 @@ TEST_CASE("a submission whose every function hangs gets 0 on every task, at most
 }
 
 TEST_CASE("a file that keeps the compiler busy is stopped by the time limit, and says so", "[security]") {
-	setenv("LAB_STEP_SECONDS", "2", 1); // tools/sandboxed's limit on a compile (default 60 s)
+	setenv("LAB_STEP_SECONDS", "2", 1); // grading/bin/sandboxed's limit on a compile (default 60 s)
 	Grade busy = grade("task1_endless_constexpr.cpp", 1);
 	unsetenv("LAB_STEP_SECONDS");
 	CHECK_FALSE(busy.built);

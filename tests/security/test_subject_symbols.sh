@@ -36,7 +36,7 @@ done
 
 # The kit's subjects of the shipped stubs, linked as grade-submission links a submission's.
 mkdir "$tmp/none"
-KIT=$kit "$root/tools/grade-submission" "$tmp/none" --out "$tmp/graded" --link-only >"$tmp/link.log" 2>&1 ||
+KIT=$kit "$root/grading/bin/grade-submission" "$tmp/none" --out "$tmp/graded" --link-only >"$tmp/link.log" 2>&1 ||
 	{ cat "$tmp/link.log" >&2; fail "grade-submission --link-only failed"; }
 
 for n in 1 2 3 4 5 6 7; do

@@ -53,7 +53,7 @@ private:
 
 const char* to_string(Pixel_Coverage::Kind kind);
 
-// ---- Furnaces placed by a grading seed (tests/judge/judge.h) ----
+// ---- Furnaces placed by a grading seed (grading/judge/judge.h) ----
 // The graders render these with the student's code: render_square in student_furnaces.h.
 
 // A sphere seen from outside: `options` with the sphere moved and resized, the camera's distance

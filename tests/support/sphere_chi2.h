@@ -53,7 +53,7 @@ using Direction_Pdf = std::function<float(Vec3)>;
 Sphere_Chi2_Result sphere_chi2(const Direction_Sampler& sample, const Direction_Pdf& pdf,
                                const Sphere_Chi2_Settings& settings = {});
 
-// The same test for a sampler that ran elsewhere (a subject, tests/judge/): its samples (their
+// The same test for a sampler that ran elsewhere (a subject, grading/judge/): its samples (their
 // number replaces settings.samples; settings.seed is not used) and its pdf at the integration
 // points sphere_chi2_pdf_directions(settings), in that order.
 std::vector<Vec3> sphere_chi2_pdf_directions(const Sphere_Chi2_Settings& settings);

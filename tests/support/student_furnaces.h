@@ -1,5 +1,5 @@
 #pragma once
-// Furnace renders (furnace_scenes.h) with the code under test: the subject (tests/judge/) renders
+// Furnace renders (furnace_scenes.h) with the code under test: the subject (grading/judge/) renders
 // the scene with the student's task and the reference of the others, and the judge gets the film.
 // Beside it the judge renders the same scene itself, with the reference implementation, for the
 // noise a correct render has (film_statistics.h): standard errors never come from the submission.

@@ -1,6 +1,6 @@
 #pragma once
 // Reference-image tests of a grader: the student's code renders a graded scene (in the subject,
-// tests/judge/), and the judge compares the film with the stored reference (graded_images.h).
+// grading/judge/), and the judge compares the film with the stored reference (graded_images.h).
 #include "scene.h"
 
 #include <string>

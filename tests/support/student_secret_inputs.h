@@ -1,5 +1,5 @@
 #pragma once
-// Inputs a submission cannot memorise (tests/judge/judge.h): with an instructor's grading seed a test
+// Inputs a submission cannot memorise (grading/judge/judge.h): with an instructor's grading seed a test
 // case draws its inputs from a generator of its own; public runs keep the fixed public cases.
 #include "rng.h"
 

@@ -1,6 +1,6 @@
 #pragma once
 // The student's Triangle::hit and Sphere::hit for a test case's rays, in one request each
-// (tests/judge/protocol.h).
+// (grading/judge/protocol.h).
 #include "judge.h"
 
 #include <vector>

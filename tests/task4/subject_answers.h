@@ -1,7 +1,7 @@
 #pragma once
-// The subject's answers to tasks 4 and 5 (the BSDFs)'s requests (tests/judge/protocol.h): each runs the task
+// The subject's answers to tasks 4 and 5 (the BSDFs)'s requests (grading/judge/protocol.h): each runs the task
 // functions on the request's inputs and returns their raw outputs. Included only by the subject's
-// main (tests/judge/subject_main.cpp).
+// main (grading/judge/subject_main.cpp).
 #include "protocol.h"
 
 namespace {

@@ -2,7 +2,7 @@
 // Local frame: the normal is +y, out_dir and in_dir both point away from the surface. The BSDF is
 // two-sided: it reflects on whichever side out_dir lies.
 //
-// The student's scatter, evaluate and pdf run in the subject (tests/judge/protocol.h); expected
+// The student's scatter, evaluate and pdf run in the subject (grading/judge/protocol.h); expected
 // values are the reference's, called here. With a grading seed the albedo, the directions and the
 // generators' seeds are drawn from it.
 #include "judge.h"

@@ -1,6 +1,6 @@
 // Task 5, handout §5.3: the exact unpolarised Fresnel reflectance of a dielectric boundary,
 // fresnel(cos_theta, index_of_refraction), cos_theta > 0 outside (vacuum), < 0 inside. The student's
-// fresnel runs in the subject (tests/judge/protocol.h).
+// fresnel runs in the subject (grading/judge/protocol.h).
 //
 // Expected values of the public cases: computed independently in double precision from r_s, r_p
 // and F = (r_s^2 + r_p^2) / 2 (handout §5.3), matching the values of Mitsuba 3's test_fresnel.

@@ -1,6 +1,6 @@
 // Task 5, handouts §5.1 and §5.4: BSDF_Mirror and BSDF_Glass scatter (material.h). Both are
 // discrete: Scatter::attenuation is the whole weight of the sample. The student's scatter runs in
-// the subject (tests/judge/protocol.h) with the generators chosen here; expected directions are
+// the subject (grading/judge/protocol.h) with the generators chosen here; expected directions are
 // the reference's reflect and refract. With a grading seed the colours, directions, indices of
 // refraction and generator seeds are drawn from it.
 #include "directions.h"

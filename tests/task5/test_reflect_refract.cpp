@@ -1,6 +1,6 @@
 // Task 5, handout §5.1-§5.2: reflect and refract in the local frame (normal +y; out_dir and the
 // returned in_dir both point away from the surface). The student's functions run in the subject
-// (tests/judge/protocol.h); expected directions are the reference's, and the checks restate the
+// (grading/judge/protocol.h); expected directions are the reference's, and the checks restate the
 // law of reflection and Snell's law. With a grading seed the directions and (where the test's name
 // does not fix it) the index of refraction are drawn from it.
 #include "directions.h"

@@ -1,6 +1,6 @@
 #pragma once
 // Every call of the student's code in the grader of task 6's optional extension (next-event
-// estimation, handout §6.5), in one place: each is one request to the subject (tests/judge/), and
+// estimation, handout §6.5), in one place: each is one request to the subject (grading/judge/), and
 // the tests only ever see the numbers these return.
 #include "film.h"
 #include "material.h"

@@ -1,6 +1,6 @@
 #pragma once
 // Shared pieces of the task-7 grader: the requests that hand the student's environment code the
-// judge's inputs (tests/judge/protocol.h), the maps the tests use, and the significance levels.
+// judge's inputs (grading/judge/protocol.h), the maps the tests use, and the significance levels.
 // Expected values never come from the code under test: they are closed forms, or the reference's
 // (the judge links the reference of every task, so uv_to_direction and direction_to_uv called here
 // are the reference's).

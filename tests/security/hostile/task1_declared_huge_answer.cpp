@@ -8,7 +8,7 @@
 #include <unistd.h>
 
 namespace {
-// The answer header (tests/judge/protocol.h) of the first request of a test case, of kind `kind`
+// The answer header (grading/judge/protocol.h) of the first request of a test case, of kind `kind`
 // (1: generate_rays, 2: trace_pixels): magic "PTLJ", kind, sequence 1, status OK, length.
 void declare_and_wait(uint32_t kind) {
 	uint32_t words[4] = {0x4a4c5450, kind, 1, 0};

@@ -1,6 +1,6 @@
 #pragma once
 // The judge-subject protocol: how a grader (the *judge*) asks a student's code (the *subject*, a
-// separate sandboxed process, tests/judge/subject_main.cpp) to run a task function on inputs the
+// separate sandboxed process, grading/judge/subject_main.cpp) to run a task function on inputs the
 // judge chose, and gets the raw outputs back to check them itself.
 //
 // Transport: the subject reads requests from file descriptor 3 and writes answers to descriptor 4

@@ -1,4 +1,4 @@
-// The grade report's Catch2 listener (`./lab report`, tests/report/), in the judge (tests/judge/):
+// The grade report's Catch2 listener (`./lab report`, grading/report/), in the judge (grading/judge/):
 // only the judge writes the report's records. When LAB_REPORT_DIR is set, a grader writes
 // <dir>/task<N>.json (report_record.h): per test case its id (its tag [id:ID], which the rubric
 // grades by), its title, whether it passed and, for

@@ -4,7 +4,7 @@
 //   task<N>.build.log   the output of building grader_task<N>_student
 //   task<N>.exit        the grader's exit status (absent: the grader did not build, or was not run)
 //   task<N>.log         the grader's output (stdout and stderr)
-//   task<N>.json        what the grader's judge recorded (tests/support/report_listener.cpp): the
+//   task<N>.json        what the grader's judge recorded (grading/report/report_listener.cpp): the
 //                       judge's test cases (each with its id and title), each one's result, how the
 //                       student's code ran
 //   task<N>_*.png       the images of its reference-image test (tests/support/graded_images.cpp)
@@ -62,7 +62,7 @@ struct Task_Result {
 	std::string running;  // the test case in progress when the grader stopped, if any
 	std::string log_file; // the file next to the report that tells more (grader output or build log)
 	std::string log_tail; // its last lines, shown when the grader crashed or did not build
-	std::string sandbox;  // how the judge ran the student's code (tests/judge/sandbox.h)
+	std::string sandbox;  // how the judge ran the student's code (grading/judge/sandbox.h)
 	std::string inputs;   // the public test cases, or drawn from a grading seed
 	std::vector<Listed_Test_Case> expected; // every test case of the judge, as it listed them
 	std::vector<std::string> not_run;       // the names of those that have no result

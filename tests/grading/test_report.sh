@@ -11,7 +11,7 @@
 #   (c) a screenshot is a real render of it: many colours, the FAIL badge's red, and the heat map's
 #       "too dark" blue (the stubs render black where the reference does not).
 # The detectors of (a) and (b) are first shown to catch a broken page. The screenshot is kept as
-# BUILD_DIR/tests/report/report_screenshot.png.
+# BUILD_DIR/grading/report/report_screenshot.png.
 #
 # usage: test_report.sh REPOSITORY_ROOT BUILD_DIR CHECK_SCREENSHOT
 set -euo pipefail
@@ -97,5 +97,5 @@ echo "report test: every task is shown failing, with messages and $images images
 # (c) The screenshot: FAIL badges #cf222e, the heat map's too-dark blue #2166ac.
 browse shot --screenshot="$tmp/shot.png" --window-size=1280,2000 "file://$page" >/dev/null
 "$check_screenshot" "$tmp/shot.png" 64 cf222e 2166ac || fail "the screenshot is not a render of the report"
-cp "$tmp/shot.png" "$build/tests/report/report_screenshot.png"
-echo "report test: the screenshot shows the page (kept as $build/tests/report/report_screenshot.png)"
+cp "$tmp/shot.png" "$build/tests/grading/report_screenshot.png"
+echo "report test: the screenshot shows the page (kept as $build/tests/grading/report_screenshot.png)"

@@ -9,14 +9,14 @@
 #include "wire.h"
 
 // The task functions, per request: each task's answers.
-#include "../task1/subject_answers.h"
-#include "../task2/subject_answers.h"
-#include "../task3/subject_answers.h"
-#include "../task4/subject_answers.h"
-#include "../task5/subject_answers.h"
-#include "../task6/subject_answers.h"
-#include "../task6_nee/subject_answers.h"
-#include "../task7/subject_answers.h"
+#include "task1/subject_answers.h"
+#include "task2/subject_answers.h"
+#include "task3/subject_answers.h"
+#include "task4/subject_answers.h"
+#include "task5/subject_answers.h"
+#include "task6/subject_answers.h"
+#include "task6_nee/subject_answers.h"
+#include "task7/subject_answers.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -163,7 +163,7 @@ int main(int argc, char** argv) {
 	wire::keep_large_buffers();
 	if (argc == 3 && std::string(argv[1]) == "--replay") return replay(argv[2]);
 	if (argc != 1) {
-		std::fprintf(stderr, "usage: %s            (started by a judge, see tests/judge/protocol.h)\n"
+		std::fprintf(stderr, "usage: %s            (started by a judge, see grading/judge/protocol.h)\n"
 		                     "       %s --replay FILE (answer the requests a judge saved, for a debugger)\n",
 		             argv[0], argv[0]);
 		return 2;

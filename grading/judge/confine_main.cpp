@@ -1,6 +1,6 @@
 // lab_confine: runs a program that may read only the system and the paths given, and write only
 // the paths given (Landlock, landlock.h). For where bubblewrap cannot run: the compile and the link
-// of a student's file (tools/sandboxed).
+// of a student's file (grading/bin/sandboxed).
 //
 //   lab_confine [--read PATH]... [--write PATH]... -- PROGRAM [ARGUMENTS]
 //

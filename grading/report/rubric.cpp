@@ -12,7 +12,7 @@ using Json = nlohmann::ordered_json;
 
 const std::set<std::string> VISIBILITIES{"visible", "after_published", "after_due_date", "hidden"};
 const std::map<int, double> DEFAULT_POINTS{{1, 5}, {2, 15}, {3, 18}, {4, 15}, {5, 15}, {6, 8}, {7, 14}};
-const char* const ABOUT = "Points per task and their split over its test cases (tests/report/rubric.h), each named by "
+const char* const ABOUT = "Points per task and their split over its test cases (grading/report/rubric.h), each named by "
                           "the id of its judge's TEST_CASE (its tag [id:ID]; the title is a reminder, grading ignores "
                           "it). Weight 0: a requirement the shipped stubs pass, which earns nothing by itself and "
                           "costs a test case's average points when it fails.";

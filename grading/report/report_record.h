@@ -1,5 +1,5 @@
 #pragma once
-// What a grader records for the grade report (`./lab report`, tests/report/). Nothing is recorded
+// What a grader records for the grade report (`./lab report`, grading/report/). Nothing is recorded
 // unless the environment variable LAB_REPORT_DIR names a directory: then the Catch2 listener
 // (report_listener.cpp) writes <dir>/task<N>.json, and checks may attach items (e.g. the images of
 // a reference-image test) to the test case that is running.
