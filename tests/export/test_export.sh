@@ -128,7 +128,7 @@ echo "export test: the release builds, and its task-1 grader fails on the stub a
 # The grade report's pieces work in the release: the driver ./lab report runs for each task
 # (grading/bin/grade-task) has the task-1 grader record its results and images, and grade_report
 # turns them into a page that shows task 1 failing.
-KIT=$release/build/grading/kit.env "$release/grading/bin/grade-task" 1 --out "$tmp/report" >"$tmp/report.log" 2>&1 ||
+"$release/grading/bin/grade-task" 1 --build "$release/build" --out "$tmp/report" >"$tmp/report.log" 2>&1 ||
 	fail "grade-task failed in the release: $(tail -5 "$tmp/report.log")"
 [ "$(cat "$tmp/report/task1.exit" 2>/dev/null)" != 0 ] ||
 	fail "the task-1 grader passed on the stub, or did not run: $(tail -5 "$tmp/report/task1.log" "$tmp/report/task1.build.log" 2>/dev/null)"

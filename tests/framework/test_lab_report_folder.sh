@@ -29,7 +29,7 @@ echo '{}' >"$LAB_REPORT_DIR/task$LAB_REPORT_TASK.json"
 echo image >"$LAB_REPORT_DIR/task${LAB_REPORT_TASK}_cornell_run$(cat "$LAB_TEST_RUN").png"
 exit 1
 GRADER
-echo "LAB_BUILD_DIR='$build'" >"$build/grading/kit.env"
+: >"$build/grading/kit.env"
 for n in 1 2 3 4 5 6 7; do
 	cp "$tmp/grader" "$build/tests/judge_task$n"
 	echo "LAB_JUDGE_$n='$build/tests/judge_task$n'" >>"$build/grading/kit.env"

@@ -11,7 +11,7 @@
 #   (c) a screenshot is a real render of it: many colours, the FAIL badge's red, and the heat map's
 #       "too dark" blue (the stubs render black where the reference does not).
 # The detectors of (a) and (b) are first shown to catch a broken page. The screenshot is kept as
-# BUILD_DIR/grading/report/report_screenshot.png.
+# BUILD_DIR/tests/grading/report_screenshot.png.
 #
 # usage: test_report.sh REPOSITORY_ROOT BUILD_DIR CHECK_SCREENSHOT
 set -euo pipefail

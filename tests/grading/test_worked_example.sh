@@ -84,10 +84,9 @@ $(diff "$out/readme.diff" "$out/worked_example.diff" | head -20)"
 echo "worked example test: a request and a test case in 4 files ($(grep -c '^@@' "$out/worked_example.diff") hunks), as grading/README.md shows"
 
 # Graded by the driver: the stub (./lab grade 1 in the scratch tree) and the reference's file.
-export KIT=$build/grading/kit.env
-"$scratch/grading/bin/grade-task" 1 --out "$out/stub" >"$out/stub.log" 2>&1 || fail "grade-task failed: $(tail -5 "$out/stub.log")"
+"$scratch/grading/bin/grade-task" 1 --build "$build" --out "$out/stub" >"$out/stub.log" 2>&1 || fail "grade-task failed: $(tail -5 "$out/stub.log")"
 [ -f "$out/stub/task1.json" ] || fail "grading the stub left no records: $(tail -20 "$out/stub/task1.build.log" 2>/dev/null)"
-"$scratch/grading/bin/grade-task" 1 --file "$scratch/reference/task1_camera.cpp" --work "$out/work" \
+KIT=$build/grading/kit.env "$scratch/grading/bin/grade-task" 1 --file "$scratch/reference/task1_camera.cpp" --work "$out/work" \
 	--out "$out/reference" >"$out/reference.log" 2>&1 || fail "grade-task --file failed: $(tail -5 "$out/reference.log")"
 [ -f "$out/reference/task1.json" ] || fail "grading the reference left no records: $(tail -20 "$out/reference/task1.build.log" 2>/dev/null)"
 # verdict RECORDS: the new test case's "passed" value in the judge's records.
