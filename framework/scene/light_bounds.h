@@ -2,7 +2,7 @@
 // What a light tree (light_tree.h) knows of a group of area lights: where they are, how much power
 // they emit, and which way they face; and from that, how much light they may send to a point (their
 // importance). The bounds of pbrt-v4's light BVH (Pharr, Jakob and Humphreys, Physically Based
-// Rendering, 4th ed., §12.6.3, LightBounds), after Estevez and Kulla, "Importance Sampling of Many
+// Rendering, 4th ed., section 12.6.3, LightBounds), after Estevez and Kulla, "Importance Sampling of Many
 // Lights with Adaptive Tree Splitting" (2018), which Blender Cycles' light tree (3.5 on) follows.
 //
 // Orientation: every normal of the group lies within the angle theta_o of `axis`. Every emitter of

@@ -1,7 +1,7 @@
 #pragma once
 // A light tree: a binary hierarchy over a scene's area lights that chooses one in proportion to how
 // much light it may send to the shading point (Light_Choice::tree, light_distribution.h). pbrt-v4's
-// light BVH (§12.6.3, BVHLightSampler) and Blender Cycles' light tree (3.5 on), after Estevez and
+// light BVH (section 12.6.3, BVHLightSampler) and Blender Cycles' light tree (3.5 on), after Estevez and
 // Kulla 2018; written for this renderer.
 //
 // Every node holds the bounds of the lights below it (light_bounds.h). A light is chosen by walking
