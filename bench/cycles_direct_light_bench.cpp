@@ -93,13 +93,14 @@ float polynomial_acos(float x) {
 
 // The solid angle of triangle (a, b, c) seen from p as Cycles 3.4 computes it for its triangle light
 // sampling and density (kernel/light/light.h, triangle_light_sample and triangle_light_pdf): in float,
-// Girard's theorem, the sum of the spherical triangle's three angles minus pi, each angle the acos
-// above of the dot product of two unit normals of the planes through p and an edge.
-float girard_solid_angle(Vec3 a, Vec3 b, Vec3 c, Vec3 p, float (*acos)(float) = polynomial_acos) {
+// Girard's theorem, the sum of the spherical triangle's three angles minus pi, each angle the arccos
+// (polynomial_acos by default) of the dot product of two unit normals of the planes through p and an
+// edge.
+float girard_solid_angle(Vec3 a, Vec3 b, Vec3 c, Vec3 p, float (*arccos)(float) = polynomial_acos) {
 	Vec3 pa = a - p, pb = b - p, pc = c - p;
 	Vec3 n_ab = glm::normalize(glm::cross(pa, pb)), n_ac = glm::normalize(glm::cross(pa, pc));
 	Vec3 n_bc = glm::normalize(glm::cross(pb, pc));
-	return acos(glm::dot(n_ac, n_ab)) + acos(-glm::dot(n_ab, n_bc)) + acos(glm::dot(n_ac, n_bc)) - float(M_PI);
+	return arccos(glm::dot(n_ac, n_ab)) + arccos(-glm::dot(n_ab, n_bc)) + arccos(glm::dot(n_ac, n_bc)) - float(M_PI);
 }
 
 float float_acos(float x) {
