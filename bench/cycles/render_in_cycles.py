@@ -50,7 +50,8 @@
 #   width, which it should not (only the noise should): on bunny_sun's ground without the bunny
 #   (max depth 1, against a quadrature of the environment) -1.2 % at 256, +0.24 % at 1024 (the
 #   image's width), -0.08 % at 2048, +0.04 % at 4096, -0.01 +- 0.004 % at 8192, where ours is
-#   +0.01 +- 0.01 % (bench/README.md). Building the 8192 map takes Cycles some 50 s.
+#   +0.01 +- 0.01 % (bench/README.md). The finer map costs Cycles time to build (the ground's
+#   render: 15 s at 1024, 70 s at 8192 on a loaded machine).
 import argparse
 import json
 import math
