@@ -27,11 +27,13 @@ struct Options {
 	std::vector<std::string> scenes;
 	uint32_t spp = 512, threads = 2;
 	bool cycles_defaults = false;
+	std::vector<std::string> cycles_options; // passed on to render_in_cycles.py
 	std::string out = "bench/results", images = LAB_BENCH_BINARY_DIR "/cycles_accuracy";
 };
 
 const char* const USAGE =
-	"usage: cycles_accuracy_bench [SCENE...] [--spp N] [--threads T] [--cycles-defaults] [--out DIR]\n"
+	"usage: cycles_accuracy_bench [SCENE...] [--spp N] [--threads T] [--cycles-defaults] [--cycles-option OPTION]...\n"
+	"                             [--out DIR]\n"
 	"\n"
 	"Renders each SCENE (default: every scenes/*.json) with the lab's reference renderer and with Blender\n"
 	"Cycles at the scene's film and max depth, N spp each (default 512) as two halves with seeds 1 and 2, on T\n"
@@ -40,7 +42,8 @@ const char* const USAGE =
 	"grid of regions per channel, z = (Cycles - ours) / standard error, and how many exceed the critical |z|\n"
 	"(Sidak, 1% per scene). --cycles-defaults: first, scenes/cornell_box.json with each group of Cycles' own\n"
 	"defaults that render_in_cycles.py overrides (bounces, clamp, light-threshold, filter), alone and all\n"
-	"together. The render times are of runs that share the machine: no speed measurement (./lab bench cycles).\n"
+	"together. --cycles-option OPTION: pass OPTION on to render_in_cycles.py (e.g. --light-as-mesh).\n"
+	"The render times are of runs that share the machine: no speed measurement (./lab bench cycles).\n"
 	"Writes DIR/cycles_accuracy.md (default DIR: bench/results) and both images of each scene as EXR under\n"
 	"the build directory.\n";
 
@@ -59,11 +62,15 @@ Options parse(int argc, char** argv) {
 		}
 		if (arg == "--cycles-defaults") {
 			o.cycles_defaults = true;
-		} else if (arg == "--spp" || arg == "--threads" || arg == "--out") {
+		} else if (arg == "--spp" || arg == "--threads" || arg == "--out" || arg == "--cycles-option") {
 			if (i + 1 >= argc) usage_error(arg + " needs a value");
 			std::string value = argv[++i];
 			if (arg == "--out") {
 				o.out = value;
+				continue;
+			}
+			if (arg == "--cycles-option") {
+				o.cycles_options.push_back(value);
 				continue;
 			}
 			int n = std::atoi(value.c_str());
@@ -94,7 +101,7 @@ Rendered render_halves(Renderer renderer, const std::string& scene, const Option
 	Rendered r;
 	HDR_Image halves[2];
 	for (uint64_t seed = 1; seed <= 2; seed++) {
-		Renderer_Run run = run_renderer(renderer, {scene, o.spp / 2, seed, o.threads, 0, cycles_defaults}, work_dir);
+		Renderer_Run run = run_renderer(renderer, {scene, o.spp / 2, seed, o.threads, 0, cycles_defaults, o.cycles_options}, work_dir);
 		halves[seed - 1] = std::move(run.image);
 		r.render_seconds += run.render_seconds;
 	}
@@ -173,12 +180,13 @@ int run(const Options& o) {
 		"beyond |z| " + fmt("%.2f", critical) + " of " + std::to_string(GRID * GRID * 3) +
 		" | largest |z| (its difference) | render s, ours / Cycles |\n|---|---|---|---|---|---|\n";
 	auto start = std::chrono::steady_clock::now();
-	std::string variants_table;
+	std::string variants_table, options;
+	for (const std::string& option : o.cycles_options) options += " " + option;
 	// Rewritten after every row, so that a run cut short keeps what it measured.
 	auto write_table = [&] {
 		std::string header = "Each scene at its own film and max depth, " + std::to_string(o.spp) +
-		                     " spp per renderer (two halves, seeds 1 and 2), " + std::to_string(o.threads) +
-		                     " threads; load average " + load_before + " at the start, " + load_average() + " at this row; " +
+		                     " spp per renderer (two halves, seeds 1 and 2), " + std::to_string(o.threads) + " threads; " +
+		                     (options.empty() ? "" : "render_in_cycles.py with" + options + "; ") + "load average " + load_before + " at the start, " + load_average() + " at this row; " +
 		                     fmt("%.0f s so far.", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()) +
 		                     "\n\n";
 		std::ofstream(o.out + "/cycles_accuracy.md") << header << variants_table << table;

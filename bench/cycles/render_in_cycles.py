@@ -4,6 +4,8 @@
 #
 #   blender -b --factory-startup --python-exit-code 1 -P bench/cycles/render_in_cycles.py -- \
 #       SCENE.json --out IMAGE.exr [--spp N] [--seed S] [--threads T] [--max-depth D] [--width W --height H]
+#       [--cycles-default GROUP]... [--light-as-mesh] [--subdivide-lights N] [--sphere-segments N]
+#       [--no-light-sampling] [--world-map-resolution N]
 #
 # Prints "cycles: export X s, render Y s" (render: the bpy.ops.render.render call alone: Cycles'
 # scene sync, BVH build and sampling; export: building the Blender scene from the JSON).
@@ -18,12 +20,38 @@
 # - lambertian: Diffuse BSDF, roughness 0 (Lambert). mirror: Glossy BSDF, sharp. glass: Glass BSDF,
 #   sharp, Fresnel-weighted reflection and refraction (needs reflectance == transmittance).
 # - emission: one-sided, from the front (the side the normal points to): Emission x not-backfacing.
+# - an emissive rectangle (the Cornell boxes' lights): a Cycles rectangle area light in its place, of
+#   power 4 A L for radiance L and area A (Cycles 3.4 gives an area light the radiance power / (4 A)),
+#   one-sided, spread 180 degrees, unseen by the camera, a hair in front of the mesh; the mesh stays,
+#   emitting to camera rays alone, and stops the rays that reach it as the lab's does (Cycles' lights
+#   let rays through). As a mesh light (--light-as-mesh) Cycles 3.4 gets the direct light of
+#   such a light wrong by -65 to +4 % (bench/README.md, `./lab bench cycles-direct-light`): it samples
+#   a light triangle over its solid angle, which it computes in float by Girard's formula (the
+#   spherical triangle's three angles minus pi) with a polynomial acos of error up to 4.5e-5 rad, off
+#   by -50 to +38 % for the 1e-4 to 1e-3 sr these triangles subtend. The area light agrees with ours
+#   and with Lambert's closed form to 0.03 % over the image (0.2 % on the walls right below the
+#   light's plane).
+# - an emissive sphere (furnace_closed): its mesh is not sampled as a light; Cycles finds it by BSDF
+#   sampling alone. Sampled as a light, Cycles 3.4 renders the closed furnace 0.085 % too dark with
+#   this mesh, 0.04 % with 64 segments and 1.24 % with 2048, where BSDF sampling alone agrees with the
+#   closed form (bench/README.md); no other shipped scene has an emissive sphere.
+# - shadow terminator: Cycles moves the origin of shadow rays from smooth-shaded triangles by a
+#   per-object "geometry offset" (default 0.1; it brightened bunny_sun's bunny by 0.1-0.3 %); the
+#   lab moves ray origins only by a rounding-error distance (framework/api/spawn_ray.h), so it is 0
+#   here (--cycles-default shadow-terminator: 0.1).
 # - spheres (analytic in the lab): a latitude-longitude mesh with the exact sphere normal at every
-#   vertex, smooth-shaded; SPHERE_SEGMENTS sets how fine.
+#   vertex, smooth-shaded; SPHERE_SEGMENTS (--sphere-segments) sets how fine.
 # - mesh normals: the lab's area-weighted vertex normals (framework/scene/mesh_builder.h) or the scene's,
 #   set as custom normals; flat_shading: face normals.
 # - environment: constant -> Background colour; image -> the equirectangular lookup of env_light.h
 #   (u = atan2(z, x) / 2 pi, v = acos(y) / pi, v = 0 the top row), bilinear, times "scale".
+#   Cycles' importance map of it (world sample_map_resolution, the map's width) is 8192 wide
+#   (--world-map-resolution): Cycles 3.4's direct light from a small bright sun depends on that
+#   width, which it should not (only the noise should): on bunny_sun's ground without the bunny
+#   (max depth 1, against a quadrature of the environment) -1.2 % at 256, +0.24 % at 1024 (the
+#   image's width), -0.08 % at 2048, +0.04 % at 4096, -0.01 +- 0.004 % at 8192, where ours is
+#   +0.01 +- 0.01 % (bench/README.md). The finer map costs Cycles time to build (the ground's
+#   render: 15 s at 1024, 70 s at 8192 on a loaded machine).
 import argparse
 import json
 import math
@@ -36,6 +64,7 @@ import numpy as np
 from mathutils import Matrix
 
 SPHERE_SEGMENTS = 512 # around the equator; half as many rings from pole to pole
+WORLD_MAP_RESOLUTION = 8192 # Cycles' importance map of an image environment (see the header)
 
 # --cycles-default NAME puts back Cycles' own default for a group of the settings matched here, to
 # measure what each one changes (bench/README.md: Cycles' darker Cornell box).
@@ -45,6 +74,7 @@ CYCLES_DEFAULT_GROUPS = {
 	"clamp": ["sample_clamp_direct", "sample_clamp_indirect"],
 	"light-threshold": ["light_sampling_threshold"],
 	"filter": ["pixel_filter_type", "filter_width"],
+	"shadow-terminator": [], # per object: Object.cycles.shadow_terminator_geometry_offset, set in add_mesh
 }
 
 
@@ -121,9 +151,9 @@ def area_weighted_normals(positions, triangles):
 	return np.where(length > 0, sums / np.where(length > 0, length, 1), [0.0, 1.0, 0.0])
 
 
-def uv_sphere(radius):
+def uv_sphere(radius, segments=SPHERE_SEGMENTS):
 	# Latitude-longitude mesh; its triangles wind counter-clockwise seen from outside.
-	rings, segments = SPHERE_SEGMENTS // 2, SPHERE_SEGMENTS
+	rings = segments // 2
 	theta = np.linspace(0, math.pi, rings + 1)[1:-1]
 	phi = np.linspace(0, 2 * math.pi, segments, endpoint=False)
 	t, p = np.meshgrid(theta, phi, indexing="ij")
@@ -141,10 +171,10 @@ def uv_sphere(radius):
 	return radius * directions, np.array(triangles, dtype=np.int64), directions
 
 
-def mesh_data(obj, scene_dir, where):
+def mesh_data(obj, scene_dir, where, sphere_segments=SPHERE_SEGMENTS):
 	# Positions, triangles, per-vertex normals (None: flat shading), in the object's own space.
 	if obj["type"] == "sphere":
-		return uv_sphere(float(obj["radius"]))
+		return uv_sphere(float(obj["radius"]), sphere_segments)
 	if "file" in obj:
 		positions, triangles = read_obj(os.path.join(scene_dir, obj["file"]), f"{where}.file")
 	else:
@@ -170,7 +200,70 @@ def to_world(positions, triangles, normals, m):
 	return positions, triangles, normals
 
 
-def add_mesh(name, positions, triangles, normals, material):
+def subdivide(positions, triangles, n):
+	# Each triangle as n x n smaller ones (a barycentric grid), for --subdivide-lights.
+	points, faces = [], []
+	for a, b, c in triangles:
+		pa, pb, pc = positions[a], positions[b], positions[c]
+		index = {}
+		for i in range(n + 1):
+			for j in range(n + 1 - i):
+				index[i, j] = len(points)
+				points.append(pa + (pb - pa) * i / n + (pc - pa) * j / n)
+		for i in range(n):
+			for j in range(n - i):
+				faces.append([index[i, j], index[i + 1, j], index[i, j + 1]])
+				if i + j < n - 1:
+					faces.append([index[i + 1, j], index[i + 1, j + 1], index[i, j + 1]])
+	return np.array(points), np.array(faces, dtype=np.int64)
+
+
+def rectangle(positions, triangles):
+	# (centre, edge u, edge v, unit front normal) when the mesh is one planar rectangle of two
+	# triangles, else None. The front is the side cross(p1 - p0, p2 - p0) of its triangles points to.
+	if len(positions) != 4 or len(triangles) != 2 or sorted(set(triangles.ravel())) != [0, 1, 2, 3]:
+		return None
+	p = positions
+	u, v = p[1] - p[0], p[3] - p[0]
+	normals = [np.cross(p[b] - p[a], p[c] - p[a]) for a, b, c in triangles]
+	normal = normals[0] / np.linalg.norm(normals[0])
+	size = max(np.linalg.norm(u), np.linalg.norm(v))
+	if (abs(np.dot(u, v)) > 1e-6 * size ** 2 or np.linalg.norm(p[0] + u + v - p[2]) > 1e-6 * size
+	        or np.dot(normals[0], normals[1]) <= 0):
+		return None
+	return p.mean(axis=0), u, v, normal
+
+
+def add_area_light(name, centre, u, v, normal, radiance):
+	# A Cycles rectangle area light for an emissive rectangle (see the header). It emits from its
+	# local -z side, one-sided, spread 180 degrees. Cycles 3.4 gives an area light of power P and area
+	# A the radiance P / (4 A) (kernel/light/light.h: eval_fac = 0.25 / area; the light's strength is
+	# colour x power), so P = 4 A L. Rays pass through a Cycles light, so the rectangle's mesh stays
+	# as the surface that stops them; the light sits a hair in front of it, so that shadow rays to
+	# the light end before the mesh.
+	size = max(np.linalg.norm(u), np.linalg.norm(v))
+	centre = centre + max(1e-4 * size, 1e-5 * np.abs(centre).max()) * normal
+	light = bpy.data.lights.new(name, "AREA")
+	light.shape = "RECTANGLE"
+	light.size, light.size_y = float(np.linalg.norm(u)), float(np.linalg.norm(v))
+	light.spread = math.pi
+	area = light.size * light.size_y
+	light.energy = 4.0 * area * max(radiance)
+	light.color = [float(r) / max(radiance) for r in radiance]
+	x, y = u / np.linalg.norm(u), v / np.linalg.norm(v)
+	z = -normal
+	if np.dot(np.cross(x, y), z) < 0:
+		x, y = y, x
+		light.size, light.size_y = light.size_y, light.size
+	m = np.eye(4)
+	m[:3, 0], m[:3, 1], m[:3, 2], m[:3, 3] = x, y, z, centre
+	obj = bpy.data.objects.new(name, light)
+	obj.matrix_world = Matrix(m.tolist())
+	obj.visible_camera = False # the camera sees the emissive mesh in its place
+	bpy.context.scene.collection.objects.link(obj)
+
+
+def add_mesh(name, positions, triangles, normals, material, terminator_offset):
 	mesh = bpy.data.meshes.new(name)
 	mesh.vertices.add(len(positions))
 	mesh.vertices.foreach_set("co", positions.astype(np.float32).ravel())
@@ -187,7 +280,9 @@ def add_mesh(name, positions, triangles, normals, material):
 		mesh.normals_split_custom_set_from_vertices(normals.astype(np.float32).tolist())
 	mesh.materials.append(material)
 	obj = bpy.data.objects.new(name, mesh)
+	obj.cycles.shadow_terminator_geometry_offset = terminator_offset # see the header
 	bpy.context.scene.collection.objects.link(obj)
+	return obj
 
 
 # ---- Materials ----------------------------------------------------------------------------------
@@ -240,9 +335,20 @@ def make_material(name, spec, where):
 	return material
 
 
+def camera_only_emission(material):
+	# A copy of `material` whose emission only camera rays see (the light in its place emits to the
+	# rest), not sampled as a light.
+	copy = material.copy()
+	nodes, links = copy.node_tree.nodes, copy.node_tree.links
+	emission = next(node for node in nodes if node.type == "EMISSION")
+	links.new(nodes.new("ShaderNodeLightPath").outputs["Is Camera Ray"], emission.inputs["Strength"])
+	copy.cycles.sample_as_light = False
+	return copy
+
+
 # ---- Environment --------------------------------------------------------------------------------
 
-def make_world(spec, scene_dir):
+def make_world(spec, scene_dir, map_resolution):
 	world = bpy.data.worlds.new("environment")
 	world.use_nodes = True
 	nodes, links = world.node_tree.nodes, world.node_tree.links
@@ -288,7 +394,7 @@ def make_world(spec, scene_dir):
 		links.new(texture.outputs["Color"], background.inputs["Color"])
 		background.inputs["Strength"].default_value = float(spec.get("scale", 1.0))
 		world.cycles.sampling_method = "MANUAL" if spec.get("importance_sampling", True) else "NONE"
-		world.cycles.sample_map_resolution = max(image.size)
+		world.cycles.sample_map_resolution = map_resolution # see the header
 	else:
 		raise SceneError(f"environment.type: expected constant or image, found {spec['type']!r}")
 	return world
@@ -371,6 +477,16 @@ def main():
 	parser.add_argument("--width", type=int)
 	parser.add_argument("--height", type=int)
 	parser.add_argument("--cycles-default", action="append", default=[], choices=sorted(CYCLES_DEFAULT_GROUPS))
+	parser.add_argument("--light-as-mesh", action="store_true",
+	                    help="emissive rectangles as mesh lights too, not as Cycles area lights (see the header)")
+	parser.add_argument("--subdivide-lights", type=int, default=1, metavar="N",
+	                    help="each emissive triangle as N x N smaller ones, a mesh light")
+	parser.add_argument("--sphere-segments", type=int, default=SPHERE_SEGMENTS, metavar="N",
+	                    help=f"segments around a sphere's equator (default {SPHERE_SEGMENTS})")
+	parser.add_argument("--world-map-resolution", type=int, default=WORLD_MAP_RESOLUTION, metavar="N",
+	                    help=f"width of Cycles' importance map of an image environment (default {WORLD_MAP_RESOLUTION})")
+	parser.add_argument("--no-light-sampling", action="store_true",
+	                    help="emissive meshes not sampled as lights: Cycles finds them by BSDF sampling alone")
 	args = parser.parse_args(sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else [])
 
 	start = time.perf_counter()
@@ -391,14 +507,30 @@ def main():
 	for group in args.cycles_default:
 		for name in CYCLES_DEFAULT_GROUPS[group]:
 			setattr(scene.cycles, name, scene.cycles.bl_rna.properties[name].default)
+	terminator_offset = 0.1 if "shadow-terminator" in args.cycles_default else 0.0 # 0.1: Cycles' default
 	materials = {name: make_material(name, spec, f"{args.scene}: materials.{name}") for name, spec in lab["materials"].items()}
+	for material in materials.values():
+		material.cycles.sample_as_light = not args.no_light_sampling
 	extent = 0.0
 	for i, obj in enumerate(lab["objects"]):
 		where = f"{args.scene}: objects[{i}]"
-		positions, triangles, normals = to_world(*mesh_data(obj, scene_dir, where), object_to_world(obj, where))
+		positions, triangles, normals = to_world(*mesh_data(obj, scene_dir, where, args.sphere_segments), object_to_world(obj, where))
 		extent = max(extent, float(np.abs(positions).max()))
-		add_mesh(obj.get("name", f"object {i}"), positions, triangles, normals, materials[obj["material"]])
-	scene.world = make_world(lab.get("environment"), scene_dir)
+		name = obj.get("name", f"object {i}")
+		emission = lab["materials"][obj["material"]].get("emission", [0, 0, 0])
+		emissive = any(e > 0 for e in emission)
+		if emissive and args.subdivide_lights > 1:
+			positions, triangles = subdivide(positions, triangles, args.subdivide_lights)
+			normals = None if normals is None else area_weighted_normals(positions, triangles) # a planar light's
+		rect = rectangle(positions, triangles) if emissive and not args.light_as_mesh else None
+		mesh_object = add_mesh(name, positions, triangles, normals, materials[obj["material"]], terminator_offset)
+		if rect is not None:
+			add_area_light(name + " (area light)", *rect, emission)
+			mesh_object.active_material = camera_only_emission(mesh_object.active_material)
+		elif emissive and obj["type"] == "sphere":
+			mesh_object.active_material = mesh_object.active_material.copy()
+			mesh_object.active_material.cycles.sample_as_light = False # see the header
+	scene.world = make_world(lab.get("environment"), scene_dir, args.world_map_resolution)
 	add_camera(lab["camera"], max(extent, float(np.abs(lab["camera"]["position"]).max()), 1e-3))
 	exported = time.perf_counter()
 

@@ -33,6 +33,7 @@ std::vector<std::string> command(Renderer renderer, const Render_Request& r, con
 			args.push_back("--cycles-default");
 			args.push_back(name);
 		}
+		args.insert(args.end(), r.cycles_options.begin(), r.cycles_options.end());
 	}
 	if (r.max_depth > 0) {
 		args.push_back("--max-depth");

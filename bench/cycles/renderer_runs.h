@@ -19,6 +19,7 @@ struct Render_Request {
 	uint32_t threads = 2;
 	uint32_t max_depth = 0; // 0: the scene's
 	std::vector<std::string> cycles_defaults; // render_in_cycles.py --cycles-default NAME: Cycles' own setting kept
+	std::vector<std::string> cycles_options;  // more render_in_cycles.py options, e.g. --light-as-area
 };
 
 struct Renderer_Run {
