@@ -25,11 +25,6 @@
 
 namespace {
 
-// The export as this benchmark was measured with: the lights as Cycles mesh lights (bench/README.md,
-// "Every shipped scene against Cycles": Cycles 3.4 converges to a slightly wrong image with them; each
-// renderer's error here is against its own reference).
-const std::vector<std::string> CYCLES_OPTIONS{"--light-as-mesh"};
-
 constexpr double TARGET_REL_MSE = 1e-3;
 const Renderer RENDERERS[] = {Renderer::lab, Renderer::cycles};
 
@@ -38,11 +33,12 @@ struct Options {
 	std::vector<uint32_t> ladder{16, 32, 64, 128, 256};
 	uint32_t repeats = 3, reference_spp = 4096, threads = 2, max_depth = 100;
 	std::string out = "bench/results", cache = LAB_BENCH_BINARY_DIR "/cycles_cache";
+	std::vector<std::string> cycles_options; // passed on to render_in_cycles.py, e.g. --light-as-mesh
 };
 
 const char* const USAGE =
 	"usage: cycles_bench [SCENE] [--spp-ladder N,N,...] [--repeats N] [--reference-spp N] [--max-depth D]\n"
-	"                    [--threads T] [--out DIR]\n"
+	"                    [--threads T] [--cycles-option OPTION]... [--out DIR]\n"
 	"\n"
 	"Renders SCENE (default scenes/cornell_box.json; its film size) with the lab's reference renderer and with\n"
 	"Blender Cycles (bench/cycles/render_in_cycles.py: matched settings), at max depth D (default 100; 0: the\n"
@@ -53,7 +49,8 @@ const char* const USAGE =
 	"cached under the build directory: delete it after changing a renderer); the reference's noise is\n"
 	"subtracted. Prints and writes DIR/cycles_time_to_error.{md,csv,svg} (default DIR: bench/results):\n"
 	"time to relMSE 1e-3 for both renderers, the efficiency 1 / (relMSE * seconds), their ratio, and the\n"
-	"load average before and after.\n";
+	"load average before and after. --cycles-option OPTION: pass OPTION on to render_in_cycles.py (e.g.\n"
+	"--light-as-mesh: the Cornell box's light as a mesh light, as before issue 26's export fixes).\n";
 
 [[noreturn]] void usage_error(const std::string& message) {
 	std::fprintf(stderr, "cycles_bench: %s\n\n%s", message.c_str(), USAGE);
@@ -87,6 +84,7 @@ Options parse(int argc, char** argv) {
 		else if (arg == "--max-depth") o.max_depth = whole(arg, value, 0);
 		else if (arg == "--threads") o.threads = whole(arg, value, 1);
 		else if (arg == "--out") o.out = value;
+		else if (arg == "--cycles-option") o.cycles_options.push_back(value);
 		else if (arg == "--spp-ladder") {
 			o.ladder.clear();
 			for (size_t start = 0; start <= value.size();) {
@@ -115,6 +113,7 @@ double mean(const std::vector<double>& values) {
 Noisy_Image reference(Renderer renderer, const Options& o, const std::string& work_dir) {
 	std::string identity = read_text_file(o.scene) + "|" + read_text_file(LAB_CYCLES_SCRIPT) + "|" +
 	                       std::to_string(o.reference_spp) + "|" + std::to_string(o.max_depth);
+	for (const std::string& option : o.cycles_options) identity += "|" + option;
 	char key[32];
 	std::snprintf(key, sizeof key, "%016zx", std::hash<std::string>{}(identity));
 	std::filesystem::create_directories(o.cache);
@@ -123,7 +122,7 @@ Noisy_Image reference(Renderer renderer, const Options& o, const std::string& wo
 		std::string path = o.cache + "/" + (renderer == Renderer::lab ? "lab_" : "cycles_") + key + "_" +
 		                   std::to_string(half) + ".exr";
 		if (!std::filesystem::exists(path)) {
-			Render_Request request{o.scene, o.reference_spp / 2, 1000000 + half, o.threads, o.max_depth, {}, CYCLES_OPTIONS};
+			Render_Request request{o.scene, o.reference_spp / 2, 1000000 + half, o.threads, o.max_depth, {}, o.cycles_options};
 			Renderer_Run run = run_renderer(renderer, request, work_dir);
 			std::printf("  %s reference half %llu: %u spp in %.0f s\n", renderer_name(renderer),
 			            static_cast<unsigned long long>(half), request.spp, run.command_seconds);
@@ -251,7 +250,7 @@ int run(const Options& o) {
 	for (size_t j = 0; j < jobs.size(); j++) {
 		for (size_t turn = 0; turn < 2; turn++) {
 			size_t k = (j + turn) % 2; // who goes first alternates
-			Render_Request request{o.scene, jobs[j].spp, jobs[j].seed, o.threads, o.max_depth, {}, CYCLES_OPTIONS};
+			Render_Request request{o.scene, jobs[j].spp, jobs[j].seed, o.threads, o.max_depth, {}, o.cycles_options};
 			Renderer_Run run = run_renderer(RENDERERS[k], request, work_dir);
 			Run_Result r{jobs[j].spp, run.command_seconds, run.render_seconds,
 			             {rel_mse(run.image, references[0].mean), rel_mse(run.image, references[1].mean)}};
@@ -270,9 +269,11 @@ int run(const Options& o) {
 	for (int k = 0; k < 2; k++)
 		for (int a = 0; a < 2; a++) curves[k][a] = fit(results[k], o.ladder, a, noise[a]);
 
-	std::string table;
+	std::string table, joined_options;
+	for (const std::string& option : o.cycles_options) joined_options += " " + option;
 	table += "Scene `" + o.scene + "`, film as in the scene, max depth " + std::to_string(o.max_depth) + ", " +
 	         std::to_string(o.threads) + " threads; " + std::to_string(o.repeats) + " renders per spp and renderer; " +
+	         (o.cycles_options.empty() ? "" : "render_in_cycles.py with" + joined_options + "; ") +
 	         "load average (1, 5, 15 min) " + load_before + " at the start, " + load_ladder + " when the timed renders began, " +
 	         load_after + " at the end.\n\n";
 	table += "| renderer | reference | relMSE at";

@@ -102,14 +102,19 @@ Area_Lights::Point Area_Lights::sample_point(size_t i, RNG& rng) const {
 	// (square-root parametrization: b0 = 1 - sqrt(u1), b1 = u2 sqrt(u1)), both from one 2D point:
 	// u.x picks the triangle and, rescaled to its share of the area, is the u1 of the point on it
 	// (as pbrt-v4's SampleDiscrete returns its u remapped), so that a pixel's low-discrepancy
-	// samples stay stratified over the whole light, and one number fewer is drawn.
+	// samples stay stratified over the whole light, and one number fewer is drawn. Rescaled, u1 keeps
+	// about 2^24 / (number of triangles) of u.x's 2^24 steps: a light of more triangles than
+	// RESCALED_MAX_TRIANGLES draws its u1 anew rather than put its points on a few lines.
+	constexpr size_t RESCALED_MAX_TRIANGLES = size_t(1) << 12;
 	Vec2 u = rng.unit2();
 	float target = u.x * light.area;
 	size_t t = size_t(std::upper_bound(light.cdf.begin(), light.cdf.end(), target) - light.cdf.begin());
 	t = std::min(t, light.triangles.size() - 1);
 	const Light_Triangle& tri = light.triangles[t];
 	float below = t > 0 ? light.cdf[t - 1] : 0.0f, share = light.cdf[t] - below;
-	float u1 = share > 0.0f ? std::clamp((target - below) / share, 0.0f, 1.0f) : 0.0f;
+	float u1 = light.triangles.size() > RESCALED_MAX_TRIANGLES ? rng.unit()
+	           : share > 0.0f                                  ? std::clamp((target - below) / share, 0.0f, 1.0f)
+	                                                           : 0.0f;
 	float su = std::sqrt(u1), b0 = 1.0f - su, b1 = u.y * su;
 	return Point{b0 * tri.p0 + b1 * tri.p1 + (1.0f - b0 - b1) * tri.p2, tri.normal};
 }

@@ -2,7 +2,8 @@
 // the density is a density over directions (it integrates to 1), the sampler draws directions with
 // exactly that density (chi-square), and a light's directions cover its solid angle (E[1/pdf] =
 // Omega). Cases: a quad, a triangle mesh crossed twice by every ray (a tetrahedron), a sphere from
-// far away and from close by, and mixtures (an environment plus a light; two lights).
+// far away and from close by, and mixtures (an environment plus a light; two lights); and the points
+// sample_point draws on a light of few triangles and of many (chi-square over its area).
 #include "cap_chi2.h"
 #include "error.h"
 #include "light_closed_forms.h"
@@ -333,5 +334,52 @@ TEST_CASE("area_lights_pdf counts a point on the edge two triangles of a light s
 			REQUIRE(pdf_beside > 0.0f);
 			CHECK(std::abs(pdf_on / pdf_beside - 1.0f) < 0.01f);
 		}
+	}
+}
+
+TEST_CASE("a mesh light's points are uniform over its area whether it has few triangles or many",
+          "[area_lights]") {
+	// sample_point picks a triangle by area and the point on it with one 2D number, the triangle's
+	// share of u.x rescaled (lights.cpp); a light of more than 2^12 triangles draws the point's
+	// first coordinate anew. Both are checked on the unit square y = 0: as two triangles, and as a
+	// grid of 2 x 46 x 46 triangles whose columns widen from left to right (unequal areas, so the
+	// choice by area is tested too). Chi-square of 10^6 points over 16 x 16 equal cells.
+	auto grid = [](uint32_t n) {
+		std::vector<Triangle> triangles;
+		auto corner = [n](uint32_t i, uint32_t k) {
+			float x = float(i) / float(n), z = float(k) / float(n);
+			return Vec3{x * x, 0.0f, z}; // column i spans [(i/n)^2, ((i+1)/n)^2]
+		};
+		Vec3 down{0.0f, -1.0f, 0.0f};
+		for (uint32_t i = 0; i < n; i++) {
+			for (uint32_t k = 0; k < n; k++) {
+				Vec3 a = corner(i, k), b = corner(i + 1, k), c = corner(i + 1, k + 1), d = corner(i, k + 1);
+				triangles.push_back(Triangle{{a, down}, {b, down}, {c, down}});
+				triangles.push_back(Triangle{{a, down}, {c, down}, {d, down}});
+			}
+		}
+		return Tri_Mesh(std::move(triangles));
+	};
+	constexpr uint32_t CELLS = 16;
+	constexpr size_t SAMPLES = 1000000;
+	const double alpha = stats::sidak(ALPHA, 2);
+	uint64_t seed = 31;
+	for (uint32_t n : {1u, 46u}) {
+		Scene scene;
+		add_object(scene, grid(n), add_material(scene, white_light(), "light"));
+		scene.commit();
+		REQUIRE(scene.area_lights.count() == 1);
+		std::vector<double> observed(CELLS * CELLS, 0.0), expected(CELLS * CELLS, double(SAMPLES) / (CELLS * CELLS));
+		RNG rng(seed++);
+		for (size_t s = 0; s < SAMPLES; s++) {
+			Vec3 p = scene.area_lights.sample_point(0, rng).position;
+			uint32_t i = std::min(uint32_t(p.x * CELLS), CELLS - 1), k = std::min(uint32_t(p.z * CELLS), CELLS - 1);
+			observed[k * CELLS + i] += 1.0;
+		}
+		stats::Chi2_Result r = stats::chi2_test(observed, expected);
+		INFO("a unit square light of " << 2 * n * n << " triangles: chi-square " << r.statistic << " with " << r.dof
+		                               << " degrees of freedom, p = " << r.p_value << " (significance " << alpha
+		                               << "): its points are not uniform over its area; see Area_Lights::sample_point");
+		CHECK(r.p_value >= alpha);
 	}
 }
