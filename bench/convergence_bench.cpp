@@ -6,6 +6,7 @@
 // every render and an SVG plot. See README.md.
 #include "bench_strategy.h"
 #include "bench_timing.h"
+#include "bench_usage.h"
 #include "convergence_metrics.h"
 #include "convergence_plot.h"
 #include "convergence_reference.h"
@@ -106,7 +107,7 @@ struct Options {
 	std::string experiment; // empty: all
 };
 
-const char* const USAGE =
+const Bench_Usage USAGE{"convergence_bench",
 	"usage: convergence_bench [--out DIR] [--seeds N] [--max-spp N] [--size WxH] [--threads T] [--experiment NAME[,NAME...]]\n"
 	"\n"
 	"Renders each experiment's two strategies at spp = 1, 2, 4, ..., N (default 64; a power of two) on a WxH\n"
@@ -133,40 +134,25 @@ const char* const USAGE =
 	"  tree_sky          dragon: --light-choice uniform vs tree\n"
 	"  tree_sky_power    dragon: --light-choice power vs tree\n"
 	"  tree_overcast     dragon_overcast (a lamp under an HDR sky): --light-choice power vs tree\n"
-	"  tree_one_light    cornell_box (one light: the same choices): --light-choice power vs tree\n";
-
-[[noreturn]] void usage_error(const std::string& message) {
-	std::fprintf(stderr, "convergence_bench: %s\n\n%s", message.c_str(), USAGE);
-	std::exit(2);
-}
-
-uint32_t positive(const std::string& option, const char* text) {
-	int value = std::atoi(text);
-	if (value < 1) usage_error(option + " needs a whole number >= 1, got '" + text + "'");
-	return uint32_t(value);
-}
+	"  tree_one_light    cornell_box (one light: the same choices): --light-choice power vs tree\n"};
 
 Options parse(int argc, char** argv) {
 	Options o;
 	for (int i = 1; i < argc; i++) {
 		std::string arg = argv[i];
-		if (arg == "-h" || arg == "--help") {
-			std::printf("%s", USAGE);
-			std::exit(0);
-		}
-		if (i + 1 >= argc) usage_error("unknown option or missing value: '" + arg + "'");
-		const char* value = argv[++i];
+		USAGE.help_if_asked(arg);
+		std::string value = USAGE.value_of(i, argc, argv);
 		if (arg == "--out") o.out = value;
-		else if (arg == "--seeds") o.seeds = positive(arg, value);
-		else if (arg == "--max-spp") o.max_spp = positive(arg, value);
-		else if (arg == "--threads") o.threads = uint32_t(std::max(0, std::atoi(value)));
+		else if (arg == "--seeds") o.seeds = USAGE.whole_number(arg, value, 1);
+		else if (arg == "--max-spp") o.max_spp = USAGE.whole_number(arg, value, 1);
+		else if (arg == "--threads") o.threads = USAGE.whole_number(arg, value, 0);
 		else if (arg == "--experiment") o.experiment = value;
 		else if (arg == "--size") {
-			if (std::sscanf(value, "%ux%u", &o.width, &o.height) != 2 || o.width < 1 || o.height < 1)
-				usage_error("--size needs WxH, e.g. 64x64, got '" + std::string(value) + "'");
-		} else usage_error("unknown option '" + arg + "'");
+			if (std::sscanf(value.c_str(), "%ux%u", &o.width, &o.height) != 2 || o.width < 1 || o.height < 1)
+				USAGE.error("--size needs WxH, e.g. 64x64, got '" + value + "'");
+		} else USAGE.error("unknown option '" + arg + "'");
 	}
-	if (o.max_spp < 2) usage_error("--max-spp must be at least 2 (a series needs two points)");
+	if (o.max_spp < 2) USAGE.error("--max-spp must be at least 2 (a series needs two points)");
 	while (o.max_spp & (o.max_spp - 1)) o.max_spp &= o.max_spp - 1; // the series: powers of two
 	return o;
 }
@@ -450,7 +436,7 @@ int run(const Options& o) {
 		if (names.empty() || std::find(names.begin(), names.end(), e.name) != names.end()) chosen.push_back(&e);
 	for (const std::string& name : names) {
 		auto named = [&](const Experiment* e) { return name == e->name; };
-		if (std::none_of(chosen.begin(), chosen.end(), named)) usage_error("unknown experiment '" + name + "'");
+		if (std::none_of(chosen.begin(), chosen.end(), named)) USAGE.error("unknown experiment '" + name + "'");
 	}
 
 	Clock::time_point start = Clock::now();

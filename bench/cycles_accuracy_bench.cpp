@@ -3,6 +3,7 @@
 // independent halves whose difference estimates each pixel's noise: the whole-image relMSE between
 // the two against what their noise alone gives, and the means of a 4 x 4 grid of regions per colour
 // channel with z-scores. `./lab bench cycles-accuracy --help`; bench/README.md.
+#include "bench_usage.h"
 #include "cycles/renderer_runs.h"
 #include "image_io.h"
 #include "significance.h"
@@ -31,7 +32,7 @@ struct Options {
 	std::string out = "bench/results", images = LAB_BENCH_BINARY_DIR "/cycles_accuracy";
 };
 
-const char* const USAGE =
+const Bench_Usage USAGE{"cycles_accuracy_bench",
 	"usage: cycles_accuracy_bench [SCENE...] [--spp N] [--threads T] [--cycles-defaults] [--cycles-option OPTION]...\n"
 	"                             [--out DIR]\n"
 	"\n"
@@ -45,26 +46,17 @@ const char* const USAGE =
 	"together. --cycles-option OPTION: pass OPTION on to render_in_cycles.py (e.g. --light-as-mesh).\n"
 	"The render times are of runs that share the machine: no speed measurement (./lab bench cycles).\n"
 	"Writes DIR/cycles_accuracy.md (default DIR: bench/results) and both images of each scene as EXR under\n"
-	"the build directory.\n";
-
-[[noreturn]] void usage_error(const std::string& message) {
-	std::fprintf(stderr, "cycles_accuracy_bench: %s\n\n%s", message.c_str(), USAGE);
-	std::exit(2);
-}
+	"the build directory.\n"};
 
 Options parse(int argc, char** argv) {
 	Options o;
 	for (int i = 1; i < argc; i++) {
 		std::string arg = argv[i];
-		if (arg == "-h" || arg == "--help") {
-			std::printf("%s", USAGE);
-			std::exit(0);
-		}
+		USAGE.help_if_asked(arg);
 		if (arg == "--cycles-defaults") {
 			o.cycles_defaults = true;
 		} else if (arg == "--spp" || arg == "--threads" || arg == "--out" || arg == "--cycles-option") {
-			if (i + 1 >= argc) usage_error(arg + " needs a value");
-			std::string value = argv[++i];
+			std::string value = USAGE.value_of(i, argc, argv);
 			if (arg == "--out") {
 				o.out = value;
 				continue;
@@ -73,13 +65,11 @@ Options parse(int argc, char** argv) {
 				o.cycles_options.push_back(value);
 				continue;
 			}
-			int n = std::atoi(value.c_str());
-			if (n < (arg == "--spp" ? 2 : 1)) usage_error(arg + ": expected a whole number (spp >= 2), got '" + value + "'");
-			(arg == "--spp" ? o.spp : o.threads) = uint32_t(n);
+			(arg == "--spp" ? o.spp : o.threads) = USAGE.whole_number(arg, value, arg == "--spp" ? 2 : 1);
 		} else if (arg.rfind("--", 0) == 0) {
-			usage_error("unknown option '" + arg + "'");
+			USAGE.error("unknown option '" + arg + "'");
 		} else {
-			if (!std::filesystem::is_regular_file(arg)) usage_error("no such scene file: " + arg);
+			if (!std::filesystem::is_regular_file(arg)) USAGE.error("no such scene file: " + arg);
 			o.scenes.push_back(arg);
 		}
 	}

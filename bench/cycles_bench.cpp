@@ -4,6 +4,7 @@
 // difference estimates the reference's own noise); time to relMSE 1e-3 from the command's start and
 // from the render time alone. `./lab bench cycles --help`; bench/README.md.
 #include "bench_timing.h"
+#include "bench_usage.h"
 #include "convergence_metrics.h"
 #include "convergence_plot.h"
 #include "cycles/renderer_runs.h"
@@ -36,7 +37,7 @@ struct Options {
 	std::vector<std::string> cycles_options; // passed on to render_in_cycles.py, e.g. --light-as-mesh
 };
 
-const char* const USAGE =
+const Bench_Usage USAGE{"cycles_bench",
 	"usage: cycles_bench [SCENE] [--spp-ladder N,N,...] [--repeats N] [--reference-spp N] [--max-depth D]\n"
 	"                    [--threads T] [--cycles-option OPTION]... [--out DIR]\n"
 	"\n"
@@ -50,53 +51,36 @@ const char* const USAGE =
 	"subtracted. Prints and writes DIR/cycles_time_to_error.{md,csv,svg} (default DIR: bench/results):\n"
 	"time to relMSE 1e-3 for both renderers, the efficiency 1 / (relMSE * seconds), their ratio, and the\n"
 	"load average before and after. --cycles-option OPTION: pass OPTION on to render_in_cycles.py (e.g.\n"
-	"--light-as-mesh: the Cornell box's light as a mesh light, as before issue 26's export fixes).\n";
-
-[[noreturn]] void usage_error(const std::string& message) {
-	std::fprintf(stderr, "cycles_bench: %s\n\n%s", message.c_str(), USAGE);
-	std::exit(2);
-}
-
-uint32_t whole(const std::string& option, const std::string& text, uint32_t least) {
-	char* end = nullptr;
-	long value = std::strtol(text.c_str(), &end, 10);
-	if (text.empty() || *end || value < long(least) || value > 1000000)
-		usage_error(option + " needs a whole number >= " + std::to_string(least) + ", got '" + text + "'");
-	return uint32_t(value);
-}
+	"--light-as-mesh: the Cornell box's light as a mesh light, as before issue 26's export fixes).\n"};
 
 Options parse(int argc, char** argv) {
 	Options o;
 	for (int i = 1; i < argc; i++) {
 		std::string arg = argv[i];
-		if (arg == "-h" || arg == "--help") {
-			std::printf("%s", USAGE);
-			std::exit(0);
-		}
+		USAGE.help_if_asked(arg);
 		if (arg.rfind("--", 0) != 0) {
 			o.scene = arg;
 			continue;
 		}
-		if (i + 1 >= argc) usage_error("unknown option or missing value: '" + arg + "'");
-		std::string value = argv[++i];
-		if (arg == "--repeats") o.repeats = whole(arg, value, 1);
-		else if (arg == "--reference-spp") o.reference_spp = whole(arg, value, 2);
-		else if (arg == "--max-depth") o.max_depth = whole(arg, value, 0);
-		else if (arg == "--threads") o.threads = whole(arg, value, 1);
+		std::string value = USAGE.value_of(i, argc, argv);
+		if (arg == "--repeats") o.repeats = USAGE.whole_number(arg, value, 1);
+		else if (arg == "--reference-spp") o.reference_spp = USAGE.whole_number(arg, value, 2);
+		else if (arg == "--max-depth") o.max_depth = USAGE.whole_number(arg, value, 0);
+		else if (arg == "--threads") o.threads = USAGE.whole_number(arg, value, 1);
 		else if (arg == "--out") o.out = value;
 		else if (arg == "--cycles-option") o.cycles_options.push_back(value);
 		else if (arg == "--spp-ladder") {
 			o.ladder.clear();
 			for (size_t start = 0; start <= value.size();) {
 				size_t comma = std::min(value.find(',', start), value.size());
-				o.ladder.push_back(whole(arg, value.substr(start, comma - start), 1));
+				o.ladder.push_back(USAGE.whole_number(arg, value.substr(start, comma - start), 1));
 				start = comma + 1;
 			}
 			std::sort(o.ladder.begin(), o.ladder.end());
-			if (o.ladder.size() < 2) usage_error("--spp-ladder needs two spp or more, e.g. 16,32,64");
-		} else usage_error("unknown option '" + arg + "'");
+			if (o.ladder.size() < 2) USAGE.error("--spp-ladder needs two spp or more, e.g. 16,32,64");
+		} else USAGE.error("unknown option '" + arg + "'");
 	}
-	if (!std::filesystem::is_regular_file(o.scene)) usage_error("no such scene file: " + o.scene);
+	if (!std::filesystem::is_regular_file(o.scene)) USAGE.error("no such scene file: " + o.scene);
 	return o;
 }
 

@@ -2,6 +2,7 @@
 // the environment for a plane under an open sky. Ours, and Cycles as render_in_cycles.py exports and
 // with the export's alternatives (--light-as-mesh, --subdivide-lights 4, --world-map-resolution N).
 // `./lab bench cycles-direct-light --help`; bench/README.md, "Every shipped scene against Cycles".
+#include "bench_usage.h"
 #include "cycles/renderer_runs.h"
 #include "light_closed_forms.h"
 #include "scene_loader.h"
@@ -28,7 +29,7 @@ struct Options {
 	std::string out = "bench/results";
 };
 
-const char* const USAGE =
+const Bench_Usage USAGE{"cycles_direct_light_bench",
 	"usage: cycles_direct_light_bench [SCENE] [--spp N] [--threads T] [--out DIR]\n"
 	"\n"
 	"Direct light alone (max depth 1) of SCENE (default scenes/cornell_small_light.json) against a closed form,\n"
@@ -42,35 +43,24 @@ const char* const USAGE =
 	"computes it in float against the exact one; with an image environment also Cycles with\n"
 	"--world-map-resolution 1024 and 4096. Per renderer: renderer / closed form - 1 over all such pixels and\n"
 	"over each region of an 8 x 8 grid, with standard errors. Writes DIR/cycles_direct_light_<scene>.md\n"
-	"(default DIR: bench/results).\n";
-
-[[noreturn]] void usage_error(const std::string& message) {
-	std::fprintf(stderr, "cycles_direct_light_bench: %s\n\n%s", message.c_str(), USAGE);
-	std::exit(2);
-}
+	"(default DIR: bench/results).\n"};
 
 Options parse(int argc, char** argv) {
 	Options o;
 	for (int i = 1; i < argc; i++) {
 		std::string arg = argv[i];
-		if (arg == "-h" || arg == "--help") {
-			std::printf("%s", USAGE);
-			std::exit(0);
-		}
+		USAGE.help_if_asked(arg);
 		if (arg == "--spp" || arg == "--threads" || arg == "--out") {
-			if (i + 1 >= argc) usage_error(arg + " needs a value");
-			std::string value = argv[++i];
+			std::string value = USAGE.value_of(i, argc, argv);
 			if (arg == "--out") {
 				o.out = value;
 				continue;
 			}
-			int n = std::atoi(value.c_str());
-			if (n < (arg == "--spp" ? 2 : 1)) usage_error(arg + ": expected a whole number (spp >= 2), got '" + value + "'");
-			(arg == "--spp" ? o.spp : o.threads) = uint32_t(n);
+			(arg == "--spp" ? o.spp : o.threads) = USAGE.whole_number(arg, value, arg == "--spp" ? 2 : 1);
 		} else if (arg.rfind("--", 0) == 0) {
-			usage_error("unknown option '" + arg + "'");
+			USAGE.error("unknown option '" + arg + "'");
 		} else {
-			if (!std::filesystem::is_regular_file(arg)) usage_error("no such scene file: " + arg);
+			if (!std::filesystem::is_regular_file(arg)) USAGE.error("no such scene file: " + arg);
 			o.scene = arg;
 		}
 	}

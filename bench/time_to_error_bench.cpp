@@ -6,6 +6,7 @@
 // README.md.
 #include "bench_strategy.h"
 #include "bench_timing.h"
+#include "bench_usage.h"
 #include "convergence_metrics.h"
 #include "convergence_plot.h"
 #include "convergence_reference.h"
@@ -51,7 +52,7 @@ struct Options {
 	std::string strategy; // empty: all
 };
 
-const char* const USAGE =
+const Bench_Usage USAGE{"time_to_error_bench",
 	"usage: time_to_error_bench [--seeds N] [--spp MIN,MAX] [--reference-spp N] [--strategy NAME] [--out DIR]\n"
 	"\n"
 	"Renders scenes/cornell_box.json at 256 x 256, max depth 100, on 2 threads, at spp = MIN, 2 MIN, ..., MAX\n"
@@ -69,42 +70,32 @@ const char* const USAGE =
 	"                uniformly\n"
 	"  + sobol       low-discrepancy samples      + nee    next-event estimation with MIS\n"
 	"  + power       lights chosen by power\n"
-	"  all           all of them (the reference renderer's defaults)\n";
+	"  all           all of them (the reference renderer's defaults)\n"};
 
-[[noreturn]] void usage_error(const std::string& message) {
-	std::fprintf(stderr, "time_to_error_bench: %s\n\n%s", message.c_str(), USAGE);
-	std::exit(2);
-}
-
-uint32_t positive(const std::string& option, const std::string& text, bool power_of_two) {
-	int value = std::atoi(text.c_str());
-	if (value < 1 || (power_of_two && (value & (value - 1))))
-		usage_error(option + " needs " + (power_of_two ? "powers of two" : "a whole number") + " >= 1, got '" + text + "'");
-	return uint32_t(value);
+uint32_t power_of_two(const std::string& option, const std::string& text) {
+	uint32_t value = USAGE.whole_number(option, text, 1);
+	if (value & (value - 1)) USAGE.error(option + " needs powers of two, got '" + text + "'");
+	return value;
 }
 
 Options parse(int argc, char** argv) {
 	Options o;
 	for (int i = 1; i < argc; i++) {
 		std::string arg = argv[i];
-		if (arg == "-h" || arg == "--help") {
-			std::printf("%s", USAGE);
-			std::exit(0);
-		}
-		if (i + 1 >= argc) usage_error("unknown option or missing value: '" + arg + "'");
-		std::string value = argv[++i];
+		USAGE.help_if_asked(arg);
+		std::string value = USAGE.value_of(i, argc, argv);
 		if (arg == "--out") o.out = value;
-		else if (arg == "--seeds") o.seeds = positive(arg, value, false);
-		else if (arg == "--reference-spp") o.reference_spp = positive(arg, value, false);
+		else if (arg == "--seeds") o.seeds = USAGE.whole_number(arg, value, 1);
+		else if (arg == "--reference-spp") o.reference_spp = USAGE.whole_number(arg, value, 1);
 		else if (arg == "--strategy") o.strategy = value;
 		else if (arg == "--spp") {
 			size_t comma = value.find(',');
-			if (comma == std::string::npos) usage_error("--spp needs MIN,MAX, e.g. 16,256, got '" + value + "'");
-			o.min_spp = positive(arg, value.substr(0, comma), true);
-			o.max_spp = positive(arg, value.substr(comma + 1), true);
-		} else usage_error("unknown option '" + arg + "'");
+			if (comma == std::string::npos) USAGE.error("--spp needs MIN,MAX, e.g. 16,256, got '" + value + "'");
+			o.min_spp = power_of_two(arg, value.substr(0, comma));
+			o.max_spp = power_of_two(arg, value.substr(comma + 1));
+		} else USAGE.error("unknown option '" + arg + "'");
 	}
-	if (o.max_spp < 2 * o.min_spp) usage_error("--spp: MAX must be at least twice MIN (a series needs two points)");
+	if (o.max_spp < 2 * o.min_spp) USAGE.error("--spp: MAX must be at least twice MIN (a series needs two points)");
 	return o;
 }
 
@@ -215,7 +206,7 @@ int run(const Options& o) {
 	std::vector<Strategy> chosen;
 	for (const Strategy& s : STRATEGIES)
 		if (o.strategy.empty() || s.name == o.strategy || &s == &STRATEGIES.front()) chosen.push_back(with_common_flags(s));
-	if (chosen.size() < 2 && !o.strategy.empty()) usage_error("unknown strategy '" + o.strategy + "'");
+	if (chosen.size() < 2 && !o.strategy.empty()) USAGE.error("unknown strategy '" + o.strategy + "'");
 
 	std::printf("time to relMSE %g: %s, %u x %u, max depth 100, %u threads; load average at the start: %s\n",
 	            TARGET_REL_MSE, SCENE, SIZE, SIZE, THREADS, load_average().c_str());
