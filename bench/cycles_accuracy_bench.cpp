@@ -26,21 +26,22 @@ constexpr double FAMILY_ALPHA = 0.01; // per scene, over its GRID x GRID x 3 reg
 struct Options {
 	std::vector<std::string> scenes;
 	uint32_t spp = 512, threads = 2;
+	uint64_t seed = 1; // the halves' seeds: seed and seed + 1
 	bool cycles_defaults = false;
 	std::vector<std::string> cycles_options; // passed on to render_in_cycles.py
 	std::string out = "bench/results", images = LAB_BENCH_BINARY_DIR "/cycles_accuracy";
 };
 
 const char* const USAGE =
-	"usage: cycles_accuracy_bench [SCENE...] [--spp N] [--threads T] [--cycles-defaults] [--cycles-option OPTION]...\n"
+	"usage: cycles_accuracy_bench [SCENE...] [--spp N] [--threads T] [--seed S] [--cycles-defaults] [--cycles-option OPTION]...\n"
 	"                             [--out DIR]\n"
 	"\n"
 	"Renders each SCENE (default: every scenes/*.json) with the lab's reference renderer and with Blender\n"
-	"Cycles at the scene's film and max depth, N spp each (default 512) as two halves with seeds 1 and 2, on T\n"
-	"threads (default 2). Per scene: the whole image's mean per channel, Cycles / ours - 1 with its standard\n"
+	"Cycles at the scene's film and max depth, N spp each (default 512) as two halves with seeds S and S + 1\n"
+	"(default S: 1), on T threads (default 2). Per scene: the whole image's mean per channel, Cycles / ours - 1 with its standard\n"
 	"error; the relMSE between the two images and what their noise alone would give; the means of a 4 x 4\n"
 	"grid of regions per channel, z = (Cycles - ours) / standard error, and how many exceed the critical |z|\n"
-	"(Sidak, 1% per scene). --cycles-defaults: first, scenes/cornell_box.json with each group of Cycles' own\n"
+	"(Sidak, 1% per scene), each listed by column and row (0 0 the top left), channel, difference and z. --cycles-defaults: first, scenes/cornell_box.json with each group of Cycles' own\n"
 	"defaults that render_in_cycles.py overrides (bounces, clamp, light-threshold, filter), alone and all\n"
 	"together. --cycles-option OPTION: pass OPTION on to render_in_cycles.py (e.g. --light-as-mesh).\n"
 	"The render times are of runs that share the machine: no speed measurement (./lab bench cycles).\n"
@@ -62,7 +63,7 @@ Options parse(int argc, char** argv) {
 		}
 		if (arg == "--cycles-defaults") {
 			o.cycles_defaults = true;
-		} else if (arg == "--spp" || arg == "--threads" || arg == "--out" || arg == "--cycles-option") {
+		} else if (arg == "--spp" || arg == "--threads" || arg == "--seed" || arg == "--out" || arg == "--cycles-option") {
 			if (i + 1 >= argc) usage_error(arg + " needs a value");
 			std::string value = argv[++i];
 			if (arg == "--out") {
@@ -71,6 +72,12 @@ Options parse(int argc, char** argv) {
 			}
 			if (arg == "--cycles-option") {
 				o.cycles_options.push_back(value);
+				continue;
+			}
+			if (arg == "--seed") {
+				char* end = nullptr;
+				o.seed = std::strtoull(value.c_str(), &end, 10);
+				if (value.empty() || *end != '\0') usage_error("--seed: expected a whole number, got '" + value + "'");
 				continue;
 			}
 			int n = std::atoi(value.c_str());
@@ -100,9 +107,9 @@ Rendered render_halves(Renderer renderer, const std::string& scene, const Option
                        const std::vector<std::string>& cycles_defaults = {}) {
 	Rendered r;
 	HDR_Image halves[2];
-	for (uint64_t seed = 1; seed <= 2; seed++) {
-		Renderer_Run run = run_renderer(renderer, {scene, o.spp / 2, seed, o.threads, 0, cycles_defaults, o.cycles_options}, work_dir);
-		halves[seed - 1] = std::move(run.image);
+	for (uint64_t half = 0; half < 2; half++) {
+		Renderer_Run run = run_renderer(renderer, {scene, o.spp / 2, o.seed + half, o.threads, 0, cycles_defaults, o.cycles_options}, work_dir);
+		halves[half] = std::move(run.image);
 		r.render_seconds += run.render_seconds;
 	}
 	r.image = from_two_halves(halves[0], halves[1]);
@@ -134,6 +141,7 @@ struct Comparison {
 	std::string whole_means; // per channel: Cycles / ours - 1, with its standard error
 	double rel_mse = 0.0, rel_mse_noise = 0.0;
 	uint32_t beyond = 0;
+	std::string beyond_list; // each region beyond: column row channel, difference, z
 	double largest_z = 0.0, largest_difference = 0.0; // over the regions: the largest |z| and its relative difference
 };
 
@@ -157,7 +165,12 @@ Comparison compare(const Noisy_Image& ours, const Noisy_Image& cycles) {
 				Region_Mean a = region_mean(ours, c, x0, x1, y0, y1), b = region_mean(cycles, c, x0, x1, y0, y1);
 				double se = std::sqrt(a.variance + b.variance);
 				double z = se > 0 ? (b.mean - a.mean) / se : (b.mean == a.mean ? 0.0 : INFINITY);
-				if (std::abs(z) > critical) result.beyond++;
+				if (std::abs(z) > critical) {
+					result.beyond++;
+					result.beyond_list += std::string(result.beyond_list.empty() ? "" : "; ") + std::to_string(gx) + " " +
+					                      std::to_string(gy) + " " + "RGB"[c] + " " +
+					                      fmt("%+.2f %%, z %.1f", a.mean > 0 ? 100.0 * (b.mean / a.mean - 1.0) : 0.0, z);
+				}
 				if (std::abs(z) > std::abs(result.largest_z)) {
 					result.largest_z = z;
 					result.largest_difference = a.mean > 0 ? b.mean / a.mean - 1.0 : 0.0;
@@ -185,7 +198,7 @@ int run(const Options& o) {
 	// Rewritten after every row, so that a run cut short keeps what it measured.
 	auto write_table = [&] {
 		std::string header = "Each scene at its own film and max depth, " + std::to_string(o.spp) +
-		                     " spp per renderer (two halves, seeds 1 and 2), " + std::to_string(o.threads) + " threads; " +
+		                     " spp per renderer (two halves, seeds " + std::to_string(o.seed) + " and " + std::to_string(o.seed + 1) + "), " + std::to_string(o.threads) + " threads; " +
 		                     (options.empty() ? "" : "render_in_cycles.py with" + options + "; ") + "load average " + load_before + " at the start, " + load_average() + " at this row; " +
 		                     fmt("%.0f s so far.", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()) +
 		                     "\n\n";
@@ -224,7 +237,7 @@ int run(const Options& o) {
 			write_exr(o.images + "/" + name + "_cycles.exr", cycles.image.mean);
 			Comparison c = compare(ours.image, cycles.image);
 			std::string row = "| `" + name + "` | " + c.whole_means + " | " + fmt("%.3g (%.3g)", c.rel_mse, c.rel_mse_noise) +
-			                  " | " + std::to_string(c.beyond) + " | " +
+			                  " | " + std::to_string(c.beyond) + (c.beyond ? " (" + c.beyond_list + ")" : "") + " | " +
 			                  fmt("%.1f (%+.2f %%)", c.largest_z, 100.0 * c.largest_difference) + " | " +
 			                  fmt("%.1f / %.1f", ours.render_seconds, cycles.render_seconds) + " |\n";
 			table += row;
