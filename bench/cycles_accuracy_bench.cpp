@@ -27,23 +27,27 @@ constexpr double FAMILY_ALPHA = 0.01; // per scene, over its GRID x GRID x 3 reg
 struct Options {
 	std::vector<std::string> scenes;
 	uint32_t spp = 512, threads = 2;
+	uint64_t seed = 1; // the halves' seeds: seed and seed + 1
 	bool cycles_defaults = false;
 	std::vector<std::string> cycles_options; // passed on to render_in_cycles.py
+	std::vector<std::string> lab_options;    // passed on to our renderer
 	std::string out = "bench/results", images = LAB_BENCH_BINARY_DIR "/cycles_accuracy";
 };
 
 const Bench_Usage USAGE{"cycles_accuracy_bench",
-	"usage: cycles_accuracy_bench [SCENE...] [--spp N] [--threads T] [--cycles-defaults] [--cycles-option OPTION]...\n"
-	"                             [--out DIR]\n"
+	"usage: cycles_accuracy_bench [SCENE...] [--spp N] [--threads T] [--seed S] [--cycles-defaults]\n"
+	"                             [--cycles-option OPTION]... [--lab-option OPTION]... [--out DIR]\n"
 	"\n"
 	"Renders each SCENE (default: every scenes/*.json) with the lab's reference renderer and with Blender\n"
-	"Cycles at the scene's film and max depth, N spp each (default 512) as two halves with seeds 1 and 2, on T\n"
-	"threads (default 2). Per scene: the whole image's mean per channel, Cycles / ours - 1 with its standard\n"
-	"error; the relMSE between the two images and what their noise alone would give; the means of a 4 x 4\n"
-	"grid of regions per channel, z = (Cycles - ours) / standard error, and how many exceed the critical |z|\n"
-	"(Sidak, 1% per scene). --cycles-defaults: first, scenes/cornell_box.json with each group of Cycles' own\n"
+	"Cycles at the scene's film and max depth, N spp each (default 512) as two halves with seeds S and S + 1\n"
+	"(default S: 1), on T threads (default 2). Per scene: the whole image's mean per channel, Cycles / ours - 1\n"
+	"with its standard error; the relMSE between the two images and what their noise alone would give; the\n"
+	"means of a 4 x 4 grid of regions per channel, z = (Cycles - ours) / standard error, and how many exceed\n"
+	"the critical |z| (Sidak, 1% per scene), each listed by column and row (0 0 the top left), channel,\n"
+	"difference and z. --cycles-defaults: first, scenes/cornell_box.json with each group of Cycles' own\n"
 	"defaults that render_in_cycles.py overrides (bounces, clamp, light-threshold, filter), alone and all\n"
-	"together. --cycles-option OPTION: pass OPTION on to render_in_cycles.py (e.g. --light-as-mesh).\n"
+	"together. --cycles-option OPTION: pass OPTION on to render_in_cycles.py (e.g. --light-as-mesh);\n"
+	"--lab-option OPTION: pass OPTION on to our renderer (e.g. --light-choice power).\n"
 	"The render times are of runs that share the machine: no speed measurement (./lab bench cycles).\n"
 	"Writes DIR/cycles_accuracy.md (default DIR: bench/results) and both images of each scene as EXR under\n"
 	"the build directory.\n"};
@@ -55,14 +59,18 @@ Options parse(int argc, char** argv) {
 		USAGE.help_if_asked(arg);
 		if (arg == "--cycles-defaults") {
 			o.cycles_defaults = true;
-		} else if (arg == "--spp" || arg == "--threads" || arg == "--out" || arg == "--cycles-option") {
+		} else if (arg == "--spp" || arg == "--threads" || arg == "--seed" || arg == "--out" || arg == "--cycles-option" || arg == "--lab-option") {
 			std::string value = USAGE.value_of(i, argc, argv);
 			if (arg == "--out") {
 				o.out = value;
 				continue;
 			}
-			if (arg == "--cycles-option") {
-				o.cycles_options.push_back(value);
+			if (arg == "--cycles-option" || arg == "--lab-option") {
+				(arg == "--cycles-option" ? o.cycles_options : o.lab_options).push_back(value);
+				continue;
+			}
+			if (arg == "--seed") {
+				o.seed = USAGE.whole_number(arg, value, 0);
 				continue;
 			}
 			(arg == "--spp" ? o.spp : o.threads) = USAGE.whole_number(arg, value, arg == "--spp" ? 2 : 1);
@@ -90,9 +98,9 @@ Rendered render_halves(Renderer renderer, const std::string& scene, const Option
                        const std::vector<std::string>& cycles_defaults = {}) {
 	Rendered r;
 	HDR_Image halves[2];
-	for (uint64_t seed = 1; seed <= 2; seed++) {
-		Renderer_Run run = run_renderer(renderer, {scene, o.spp / 2, seed, o.threads, 0, cycles_defaults, o.cycles_options}, work_dir);
-		halves[seed - 1] = std::move(run.image);
+	for (uint64_t half = 0; half < 2; half++) {
+		Renderer_Run run = run_renderer(renderer, {scene, o.spp / 2, o.seed + half, o.threads, 0, cycles_defaults, o.cycles_options, o.lab_options}, work_dir);
+		halves[half] = std::move(run.image);
 		r.render_seconds += run.render_seconds;
 	}
 	r.image = from_two_halves(halves[0], halves[1]);
@@ -124,7 +132,9 @@ struct Comparison {
 	std::string whole_means; // per channel: Cycles / ours - 1, with its standard error
 	double rel_mse = 0.0, rel_mse_noise = 0.0;
 	uint32_t beyond = 0;
+	std::string beyond_list; // each region beyond: column row channel, difference, z
 	double largest_z = 0.0, largest_difference = 0.0; // over the regions: the largest |z| and its relative difference
+	std::string largest_where;                            // its column, row and channel
 };
 
 Comparison compare(const Noisy_Image& ours, const Noisy_Image& cycles) {
@@ -147,10 +157,16 @@ Comparison compare(const Noisy_Image& ours, const Noisy_Image& cycles) {
 				Region_Mean a = region_mean(ours, c, x0, x1, y0, y1), b = region_mean(cycles, c, x0, x1, y0, y1);
 				double se = std::sqrt(a.variance + b.variance);
 				double z = se > 0 ? (b.mean - a.mean) / se : (b.mean == a.mean ? 0.0 : INFINITY);
-				if (std::abs(z) > critical) result.beyond++;
+				if (std::abs(z) > critical) {
+					result.beyond++;
+					result.beyond_list += std::string(result.beyond_list.empty() ? "" : "; ") + std::to_string(gx) + " " +
+					                      std::to_string(gy) + " " + "RGB"[c] + " " +
+					                      fmt("%+.2f %%, z %.1f", a.mean > 0 ? 100.0 * (b.mean / a.mean - 1.0) : 0.0, z);
+				}
 				if (std::abs(z) > std::abs(result.largest_z)) {
 					result.largest_z = z;
 					result.largest_difference = a.mean > 0 ? b.mean / a.mean - 1.0 : 0.0;
+					result.largest_where = std::to_string(gx) + " " + std::to_string(gy) + " " + "RGB"[c];
 				}
 			}
 	return result;
@@ -168,15 +184,18 @@ int run(const Options& o) {
 	std::string table =
 		"| scene | Cycles / ours − 1, whole image, R / G / B (%, ± standard error) | relMSE (noise alone) | regions "
 		"beyond |z| " + fmt("%.2f", critical) + " of " + std::to_string(GRID * GRID * 3) +
-		" | largest |z| (its difference) | render s, ours / Cycles |\n|---|---|---|---|---|---|\n";
+		" | largest |z| (its difference, column row channel) | render s, ours / Cycles |\n|---|---|---|---|---|---|\n";
 	auto start = std::chrono::steady_clock::now();
 	std::string variants_table, options;
 	for (const std::string& option : o.cycles_options) options += " " + option;
+	std::string lab_options;
+	for (const std::string& option : o.lab_options) lab_options += " " + option;
 	// Rewritten after every row, so that a run cut short keeps what it measured.
 	auto write_table = [&] {
 		std::string header = "Each scene at its own film and max depth, " + std::to_string(o.spp) +
-		                     " spp per renderer (two halves, seeds 1 and 2), " + std::to_string(o.threads) + " threads; " +
-		                     (options.empty() ? "" : "render_in_cycles.py with" + options + "; ") + "load average " + load_before + " at the start, " + load_average() + " at this row; " +
+		                     " spp per renderer (two halves, seeds " + std::to_string(o.seed) + " and " + std::to_string(o.seed + 1) + "), " + std::to_string(o.threads) + " threads; " +
+		                     (options.empty() ? "" : "render_in_cycles.py with" + options + "; ") +
+		                     (lab_options.empty() ? "" : "ours with" + lab_options + "; ") + "load average " + load_before + " at the start, " + load_average() + " at this row; " +
 		                     fmt("%.0f s so far.", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()) +
 		                     "\n\n";
 		std::ofstream(o.out + "/cycles_accuracy.md") << header << variants_table << table;
@@ -214,8 +233,8 @@ int run(const Options& o) {
 			write_exr(o.images + "/" + name + "_cycles.exr", cycles.image.mean);
 			Comparison c = compare(ours.image, cycles.image);
 			std::string row = "| `" + name + "` | " + c.whole_means + " | " + fmt("%.3g (%.3g)", c.rel_mse, c.rel_mse_noise) +
-			                  " | " + std::to_string(c.beyond) + " | " +
-			                  fmt("%.1f (%+.2f %%)", c.largest_z, 100.0 * c.largest_difference) + " | " +
+			                  " | " + std::to_string(c.beyond) + (c.beyond ? " (" + c.beyond_list + ")" : "") + " | " +
+			                  fmt("%.1f (%+.2f %%, ", c.largest_z, 100.0 * c.largest_difference) + c.largest_where + ") | " +
 			                  fmt("%.1f / %.1f", ours.render_seconds, cycles.render_seconds) + " |\n";
 			table += row;
 			std::printf(" %s", row.c_str());

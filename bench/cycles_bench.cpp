@@ -106,7 +106,7 @@ Noisy_Image reference(Renderer renderer, const Options& o, const std::string& wo
 		std::string path = o.cache + "/" + (renderer == Renderer::lab ? "lab_" : "cycles_") + key + "_" +
 		                   std::to_string(half) + ".exr";
 		if (!std::filesystem::exists(path)) {
-			Render_Request request{o.scene, o.reference_spp / 2, 1000000 + half, o.threads, o.max_depth, {}, o.cycles_options};
+			Render_Request request{o.scene, o.reference_spp / 2, 1000000 + half, o.threads, o.max_depth, {}, o.cycles_options, {}};
 			Renderer_Run run = run_renderer(renderer, request, work_dir);
 			std::printf("  %s reference half %llu: %u spp in %.0f s\n", renderer_name(renderer),
 			            static_cast<unsigned long long>(half), request.spp, run.command_seconds);
@@ -234,7 +234,7 @@ int run(const Options& o) {
 	for (size_t j = 0; j < jobs.size(); j++) {
 		for (size_t turn = 0; turn < 2; turn++) {
 			size_t k = (j + turn) % 2; // who goes first alternates
-			Render_Request request{o.scene, jobs[j].spp, jobs[j].seed, o.threads, o.max_depth, {}, o.cycles_options};
+			Render_Request request{o.scene, jobs[j].spp, jobs[j].seed, o.threads, o.max_depth, {}, o.cycles_options, {}};
 			Renderer_Run run = run_renderer(RENDERERS[k], request, work_dir);
 			Run_Result r{jobs[j].spp, run.command_seconds, run.render_seconds,
 			             {rel_mse(run.image, references[0].mean), rel_mse(run.image, references[1].mean)}};

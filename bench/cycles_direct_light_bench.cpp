@@ -300,7 +300,7 @@ int run(const Options& o) {
 		std::fflush(stdout);
 		HDR_Image halves[2];
 		for (uint64_t seed = 1; seed <= 2; seed++) {
-			Render_Request request{o.scene, o.spp / 2, seed, o.threads, 1, {}, v.cycles_options};
+			Render_Request request{o.scene, o.spp / 2, seed, o.threads, 1, {}, v.cycles_options, {}};
 			halves[seed - 1] = run_renderer(v.renderer, request, work_dir).image;
 		}
 		Noisy_Image image = from_two_halves(halves[0], halves[1]);

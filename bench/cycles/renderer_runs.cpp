@@ -25,6 +25,7 @@ std::vector<std::string> command(Renderer renderer, const Render_Request& r, con
 	if (renderer == Renderer::lab) {
 		args = {LAB_RENDERER, r.scene, "--spp", std::to_string(r.spp), "--seed", std::to_string(r.seed), "--threads",
 		        std::to_string(r.threads), "--exr", image, "--out", image + ".png"};
+		args.insert(args.end(), r.lab_options.begin(), r.lab_options.end());
 	} else {
 		args = {"blender", "-b", "--factory-startup", "--python-exit-code", "1", "-P", LAB_CYCLES_SCRIPT, "--", r.scene,
 		        "--out", image, "--spp", std::to_string(r.spp), "--seed", std::to_string(r.seed), "--threads",

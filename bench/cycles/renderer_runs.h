@@ -19,7 +19,8 @@ struct Render_Request {
 	uint32_t threads = 2;
 	uint32_t max_depth = 0; // 0: the scene's
 	std::vector<std::string> cycles_defaults; // render_in_cycles.py --cycles-default NAME: Cycles' own setting kept
-	std::vector<std::string> cycles_options;  // more render_in_cycles.py options, e.g. --light-as-area
+	std::vector<std::string> cycles_options;  // more render_in_cycles.py options, e.g. --light-as-mesh
+	std::vector<std::string> lab_options;     // more options of our renderer, e.g. --light-choice power
 };
 
 struct Renderer_Run {
