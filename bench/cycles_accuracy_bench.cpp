@@ -122,12 +122,6 @@ Region_Mean region_mean(const Noisy_Image& image, int c, uint32_t x0, uint32_t x
 	return m;
 }
 
-std::string fmt(const char* format, double a, double b = 0.0) {
-	char text[96];
-	std::snprintf(text, sizeof text, format, a, b);
-	return text;
-}
-
 struct Comparison {
 	std::string whole_means; // per channel: Cycles / ours - 1, with its standard error
 	double rel_mse = 0.0, rel_mse_noise = 0.0;

@@ -69,10 +69,6 @@ Options parse(int argc, char** argv) {
 
 using closed_form::DVec3;
 
-DVec3 dvec(Vec3 v) {
-	return DVec3(v.x, v.y, v.z);
-}
-
 // Cycles 3.4's fast_acosf (util/math_fast.h): sqrt(1 - |x|) times a cubic in |x|, mirrored for x < 0;
 // its largest error is 4.5e-5 rad.
 float polynomial_acos(float x) {
@@ -119,7 +115,7 @@ DVec3 sky_irradiance(const Scene& scene) {
 			double phi = (j + 0.5) * 2 * M_PI / segments;
 			Spectrum l = scene.environment_radiance(Vec3(float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)),
 			                                             float(std::sin(theta) * std::sin(phi))));
-			e += weight * DVec3(l.x, l.y, l.z);
+			e += weight * DVec3(l);
 		}
 	}
 	return e;
@@ -193,16 +189,16 @@ Closed_Form_Image closed_form_image(const Scene& scene) {
 							image.valid[i] = false;
 							break;
 						}
-						double e = closed_form::polygon_irradiance({dvec(t.p0), dvec(t.p1), dvec(t.p2)}, dvec(p), dvec(normal), 1.0);
-						double exact = closed_form::triangle_solid_angle(dvec(t.p0), dvec(t.p1), dvec(t.p2), dvec(p));
-						radiance_sum += e * DVec3(emission.x, emission.y, emission.z);
+						double e = closed_form::polygon_irradiance({DVec3(t.p0), DVec3(t.p1), DVec3(t.p2)}, DVec3(p), DVec3(normal), 1.0);
+						double exact = closed_form::triangle_solid_angle(DVec3(t.p0), DVec3(t.p1), DVec3(t.p2), DVec3(p));
+						radiance_sum += e * DVec3(emission);
 						irradiance += e;
 						image.weighted_ratio[i] += e * girard_solid_angle(t.p0, t.p1, t.p2, p) / exact;
 						image.weighted_ratio_exact_acos[i] += e * girard_solid_angle(t.p0, t.p1, t.p2, p, float_acos) / exact;
 					}
 				}
 				Spectrum albedo = lambertian->albedo;
-				image.value[i] += DVec3(albedo.x, albedo.y, albedo.z) / M_PI * radiance_sum / double(SUBPIXELS * SUBPIXELS);
+				image.value[i] += DVec3(albedo) / M_PI * radiance_sum / double(SUBPIXELS * SUBPIXELS);
 				image.weight[i] += irradiance;
 			}
 		}
@@ -218,12 +214,6 @@ Closed_Form_Image closed_form_image(const Scene& scene) {
 						image.valid[size_t(y) * image.w + x] = false;
 				}
 	return image;
-}
-
-std::string fmt(const char* format, double a, double b = 0.0) {
-	char text[96];
-	std::snprintf(text, sizeof text, format, a, b);
-	return text;
 }
 
 // Sums over the valid pixels of [x0, x1) x [y0, y1), the three channels together.

@@ -5,6 +5,7 @@
 #include "text_file.h"
 
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <fcntl.h>
 #include <fstream>
@@ -97,6 +98,12 @@ std::string load_average() {
 	std::string one, five, fifteen;
 	file >> one >> five >> fifteen;
 	return file ? one + " " + five + " " + fifteen : "unknown";
+}
+
+std::string fmt(const char* format, double a, double b) {
+	char text[96];
+	std::snprintf(text, sizeof text, format, a, b);
+	return text;
 }
 
 Noisy_Image from_two_halves(const HDR_Image& a, const HDR_Image& b) {

@@ -36,6 +36,9 @@ Renderer_Run run_renderer(Renderer renderer, const Render_Request& request, cons
 // "0.22 0.28 0.29": the 1, 5 and 15 minute load averages.
 std::string load_average();
 
+// One or two numbers as text by a printf format, e.g. fmt("%+.2f ± %.2f", difference, error).
+std::string fmt(const char* format, double a, double b = 0.0);
+
 // ---- Images and their noise -----------------------------------------------------------------------
 
 // The mean of two independent renders A and B and the variance of that mean per pixel channel,
