@@ -32,11 +32,14 @@ endfunction()
 set(LAB_PRECOMPILED_DIR ${PROJECT_BINARY_DIR}/precompiled)
 set(LAB_PRECOMPILED_HEADERS pathtracer.h shapes.h bvh.h material.h env_light.h)
 
-# lab_student_object(<target> <source>): a student's task file, compiled for a quick verdict after
-# an edit (a plain object, no link-time optimization, the precompiled headers), where the compiler
-# sees only the system, the student's API (framework/api/) and this file (grading/bin/compile-student). A
-# precompiled header stands for the headers it was made of, which the object's dependency file then
-# does not list: the object depends on it instead.
+# lab_student_object(<target> <source>): a student's task file (its name says its task, taskN_*.cpp),
+# compiled for a quick verdict after an edit (a plain object, no link-time optimization, the
+# precompiled headers), where the compiler sees only the system, the student's API (framework/api/)
+# and this file, and kept only if it is what the compiler made of the student's C++
+# (grading/bin/compile-student, with the checks of grading/checks/). A precompiled header stands for
+# the headers it was made of, which the object's dependency file then does not list: the object
+# depends on it instead.
+set(LAB_CHECKS_DIR ${PROJECT_BINARY_DIR}/grading/checks)
 function(lab_student_object target source)
 	add_library(${target} OBJECT ${source})
 	target_link_libraries(${target} PUBLIC framework_api)
@@ -45,8 +48,22 @@ function(lab_student_object target source)
 	list(TRANSFORM LAB_PRECOMPILED_HEADERS REPLACE "(.+)" "${LAB_PRECOMPILED_DIR}/\\1.gch" OUTPUT_VARIABLE precompiled)
 	set_property(SOURCE ${source} APPEND PROPERTY OBJECT_DEPENDS ${precompiled})
 	add_dependencies(${target} precompiled_headers)
+	lab_student_compile(${target} ${source} --precompiled ${LAB_PRECOMPILED_DIR})
+endfunction()
+
+# lab_student_compile(<target> <source> [compile-student options]): <target>'s compiles go through
+# grading/bin/compile-student, checked as task N's file (N from <source>'s name).
+function(lab_student_compile target source)
+	get_filename_component(file ${source} NAME)
+	if(NOT file MATCHES "^task([1-7])_")
+		message(FATAL_ERROR "lab_student_compile: ${source} is not named like a task file (taskN_*.cpp)")
+	endif()
+	set(n ${CMAKE_MATCH_1})
+	set_property(SOURCE ${source} APPEND PROPERTY OBJECT_DEPENDS ${LAB_CHECKS_DIR}/task${n}_symbols.txt)
+	add_dependencies(${target} student_checks)
 	set_property(TARGET ${target} PROPERTY CXX_COMPILER_LAUNCHER
-		${PROJECT_SOURCE_DIR}/grading/bin/compile-student ${PROJECT_SOURCE_DIR}/framework/api --precompiled ${LAB_PRECOMPILED_DIR})
+		${PROJECT_SOURCE_DIR}/grading/bin/compile-student ${PROJECT_SOURCE_DIR}/framework/api ${ARGN}
+		--task ${n} --checks ${LAB_CHECKS_DIR})
 endfunction()
 
 # The seven task files. Each is compiled once per implementation (student/ and reference/) into an

@@ -37,7 +37,7 @@ mkdir -p "$dest/tests" "$dest/prebuilt" "$dest/grading/bin"
 (cd "$root" && cp -R CMakeLists.txt CMakePresets.json lab cmake framework tasks student scenes handouts "$dest/")
 for source in "${shipped_compiled[@]}"; do rm -f "$dest/$source"; done
 find "$dest/framework" -type d -empty -delete
-(cd "$root/grading" && cp -R CMakeLists.txt judge report "$dest/grading/" &&
+(cd "$root/grading" && cp -R CMakeLists.txt judge report checks "$dest/grading/" &&
 	cp bin/grade-task bin/compile-student bin/sandboxed "$dest/grading/bin/")
 (cd "$root/tests" && cp -R CMakeLists.txt support framework task1 task2 task3 task4 task5 task6 task6_nee task7 "$dest/tests/")
 for library in "${libraries[@]}"; do cp "$objects/prebuilt/lib$library.a" "$dest/prebuilt/"; done

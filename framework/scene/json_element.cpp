@@ -150,6 +150,14 @@ Json_Element Json_Element::parse_file(const std::string& file) {
 	return Json_Element(std::move(document), root, "");
 }
 
+Json_Element Json_Element::from_json(Json root, const std::string& file) {
+	auto document = std::make_shared<Document>();
+	document->file = file;
+	document->root = std::move(root);
+	const Json* value = &document->root;
+	return Json_Element(std::move(document), value, "");
+}
+
 // --- Errors
 
 std::string Json_Element::found() const {

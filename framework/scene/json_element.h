@@ -20,6 +20,8 @@ public:
 	// Reads and parses a whole file. Errors: the file cannot be read, the text is not JSON (with
 	// line and column), a number overflows, a key appears twice in one object.
 	static Json_Element parse_file(const std::string& file);
+	// A document made in code, read as if it were `file` (its errors and relative paths name it).
+	static Json_Element from_json(Json root, const std::string& file);
 
 	// --- Objects. A missing member is an element too: reading a value from it fails with
 	// "expected <value>, found nothing (the key is missing)".

@@ -153,12 +153,23 @@ Scene read_scene(const Json_Element& root) {
 
 } // namespace
 
-Scene load_scene(const std::string& path) {
-	Json_Element root = Json_Element::parse_file(path);
+namespace {
+
+Scene read_scene_of(const Json_Element& root) {
 	try {
 		return read_scene(root);
 	} catch (const Json::exception& e) {
 		// Not expected (every value's type is checked before it is read), but never a crash.
-		throw Input_Error(path + ": " + e.what());
+		throw Input_Error(root.file() + ": " + e.what());
 	}
+}
+
+} // namespace
+
+Scene load_scene(const std::string& path) {
+	return read_scene_of(Json_Element::parse_file(path));
+}
+
+Scene load_scene(const Json& description, const std::string& path) {
+	return read_scene_of(Json_Element::from_json(description, path));
 }

@@ -17,8 +17,13 @@
 #include <memory>
 
 #include <sys/prctl.h>
+#include <sys/resource.h>
 
 namespace {
+
+// The judge's address space: its own work (a reference render, the largest test scene's BVH) takes
+// a few hundred MiB, its threads' stacks and allocator arenas a few hundred more.
+constexpr rlim_t JUDGE_MEMORY_BYTES = rlim_t(4) << 30;
 
 struct Judge_State {
 	std::string program;   // the subject program
@@ -139,6 +144,12 @@ int main(int argc, char** argv) {
 	// Not dumpable: a subject running as the same user (process limits, no Landlock) can neither
 	// trace the judge nor read or write its memory through /proc.
 	prctl(PR_SET_DUMPABLE, 0, 0, 0, 0);
+	// The judge's own memory is bounded: what a subject sends can cost it no more than this
+	// (Subject::answer_limit, and wire.h's decoding in proportion to the bytes received).
+	// (The hard limit stays, so that a debug subject, which needs the address space of its
+	// sanitizers, can lift the soft one: subject.cpp.)
+	const rlimit memory{JUDGE_MEMORY_BYTES, RLIM_INFINITY};
+	setrlimit(RLIMIT_AS, &memory);
 	wire::keep_large_buffers();
 	Catch::Session session;
 	session.configData().reporterName = "lab";

@@ -62,6 +62,7 @@ std::string seconds(double s) {
 	limit(RLIMIT_NOFILE, limits.open_files, limits.open_files);
 	limit(RLIMIT_CORE, 0, 0);
 	if (sandbox.mode() != Sandbox::Mode::none) limit(RLIMIT_AS, limits.memory_bytes, limits.memory_bytes);
+	else limit(RLIMIT_AS, RLIM_INFINITY, RLIM_INFINITY); // not the judge's own: a sanitizer maps terabytes
 	prctl(PR_SET_PDEATHSIG, SIGKILL);
 	char* const clean_environment[] = {const_cast<char*>("PATH=/usr/bin:/bin"), nullptr};
 	if (sandbox.mode() == Sandbox::Mode::process_limits) {
@@ -261,8 +262,12 @@ std::string Subject::exchange(Kind kind, const std::string& payload, const Quest
 		std::memcpy(&answer_sequence, header + 8, 4);
 		std::memcpy(&status, header + 12, 4);
 		std::memcpy(&length, header + 16, 8);
-		if (magic != protocol::MAGIC || length > protocol::MAX_PAYLOAD || status > uint32_t(protocol::Status::QUESTION)) {
+		if (magic != protocol::MAGIC || status > uint32_t(protocol::Status::QUESTION)) {
 			fail(kind, "wrote something that is not an answer to its answer channel");
+		}
+		if (length > answer_limit(payload.size())) {
+			fail(kind, "sent an answer of " + std::to_string(length) + " bytes, more than any answer to this request (" +
+			               std::to_string(answer_limit(payload.size())) + " bytes): the subject's answer is too large");
 		}
 		if (answer_kind != uint32_t(kind) || answer_sequence != number) fail(kind, "answered out of turn");
 		if (protocol::Status(status) != protocol::Status::QUESTION) break;

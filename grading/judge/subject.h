@@ -12,6 +12,7 @@
 
 #include <chrono>
 #include <functional>
+#include <new>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -54,16 +55,32 @@ public:
 
 	// `questions`: for a request that asks back (BVH_Instances); empty: a question is malformed.
 	template<class Request> typename Request::Answer ask(const Request& request, const Questions& questions = {}) {
-		std::string answer = exchange(Request::KIND, wire::encode(request), questions);
+		std::string answer;
+		try {
+			answer = exchange(Request::KIND, wire::encode(request), questions);
+		} catch (const std::bad_alloc&) {
+			fail(Request::KIND, "sent an answer too large for the judge's memory limit");
+		}
 		auto decoded = [&] {
 			try {
 				return wire::decode<typename Request::Answer>(answer);
 			} catch (const wire::Malformed& problem) {
 				fail(Request::KIND, std::string("answered with bytes that are not an answer (") + problem.what() + ")");
+			} catch (const std::bad_alloc&) {
+				answer = std::string();
+				fail(Request::KIND, "sent an answer too large for the judge's memory limit");
 			}
 		}();
 		if (!request.fits(decoded)) fail(Request::KIND, "answered with a result count its inputs do not call for");
 		return decoded;
+	}
+
+	// The largest answer the judge reads to a request of `request_bytes`: every answer is a batch of
+	// results about the size of the request's inputs (a film is the exception: a few bytes of scene
+	// settings, 104 bytes a pixel), so 16 times the request and 64 MiB (a film of 640,000 pixels)
+	// bound every answer a correct subject sends. One beyond it is "too large", never read.
+	static uint64_t answer_limit(uint64_t request_bytes) {
+		return (uint64_t(64) << 20) + 16 * request_bytes;
 	}
 
 	// The end of what the subject printed (stdout and stderr), at most `lines` lines.

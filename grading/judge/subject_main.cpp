@@ -5,6 +5,10 @@
 //
 // For debugging (./lab grade N --debug), `subject --replay FILE` answers the requests a judge
 // saved in FILE and discards the answers, so the student's code can be stepped through in gdb.
+//
+// Before any of its own code runs (student code included), it locks itself to the code it was
+// linked with: no exec, no new executable memory (no_new_code.h).
+#include "no_new_code.h"
 #include "protocol.h"
 #include "wire.h"
 
@@ -31,6 +35,16 @@
 namespace {
 
 using namespace protocol;
+
+void lock_to_linked_code() {
+	if (!forbid_new_code()) {
+		std::fprintf(stderr, "subject: the system refused the filter that keeps a subject to its own code (seccomp): %s\n",
+		             std::strerror(errno));
+		_exit(125);
+	}
+}
+// The C library runs the .preinit_array before every static initializer of the program.
+[[gnu::used, gnu::section(".preinit_array")]] void (*run_first)() = lock_to_linked_code;
 
 // The answer to the request of kind `kind`, encoded (protocol::Requests lists them all).
 template<class... Request> std::string serve_one_of(std::tuple<Request...>*, Kind kind, const std::string& payload) {

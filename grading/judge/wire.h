@@ -5,6 +5,7 @@
 // Structs of the protocol list their members once, in fields(); framework types are encoded here.
 #include "protocol.h"
 
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -20,6 +21,8 @@ template<> inline constexpr bool is_float_record<Vec2> = sizeof(Vec2) == 2 * siz
 template<> inline constexpr bool is_float_record<Vec3> = sizeof(Vec3) == 3 * sizeof(float);
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "the protocol's numbers are little-endian");
 template<> inline constexpr bool is_float_record<Scatter> = sizeof(Scatter) == 6 * sizeof(float);
+
+template<class T> size_t smallest_encoding();
 
 struct Malformed : std::runtime_error {
 	using std::runtime_error::runtime_error;
@@ -166,12 +169,14 @@ private:
 	void get(Pixel_Stats& pixel);
 	void get(Film& film);
 	void get(Scene& scene);
+	// A vector is allocated for as many items as the bytes left can encode, so that a message never
+	// decodes into much more memory than its own size.
 	template<class T> void get(std::vector<T>& items) {
 		if constexpr (is_float_record<T>) {
 			items.resize(count(sizeof(T)));
 			raw(items.data(), items.size() * sizeof(T));
 		} else {
-			items.resize(count(1));
+			items.resize(count(smallest_encoding<T>()));
 			for (T& item : items) get(item);
 		}
 	}
@@ -194,6 +199,13 @@ template<class T> T empty_value() {
 }
 template<> inline Film empty_value<Film>() {
 	return Film(0, 0);
+}
+
+// The fewest bytes a T is encoded in: an empty value's (no items in its vectors, the first and
+// shortest alternative of its variants).
+template<class T> size_t smallest_encoding() {
+	static const size_t bytes = std::max<size_t>(1, encode(empty_value<T>()).size());
+	return bytes;
 }
 
 template<class T> T decode(const std::string& bytes) {

@@ -309,7 +309,7 @@ TEST_CASE("a task file that has the assembler read the reference (.incbin) earns
 TEST_CASE("a task1_if_* file whose attack works earns full marks", "[security]") {
 	// The control: without it, "earns nothing" below would prove nothing about the attacks.
 	Temp_Dir dir;
-	std::string always = "bool attack_worked() { return true; }\n" +
+	std::string always = "static bool attack_worked() { return true; }\n" +
 	                     read_file("tests/security/hostile/correct_task1_if.inc");
 	Grade graded = grade_files(dir, {{1, always}}, "--tasks 1")[1];
 	CHECK(graded.built);

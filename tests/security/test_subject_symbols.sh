@@ -43,7 +43,7 @@ for n in 1 2 3 4 5 6 7; do
 	forbidden=()
 	[[ $n == 2 || $n == 3 ]] && forbidden+=("${fast_accelerator[@]}")
 	[[ $n == 4 ]] && forbidden+=("${nee_integrator[@]}")
-	for subject in "$subjects/subject_task${n}_student" "$tmp/graded/work/subject_task$n"; do
+	for subject in "$subjects/subject_task${n}_student" "$tmp/graded/work/task$n/subject_task$n"; do
 		linked=$(sources_of "$subject" | grep -xF -f <(printf '%s\n' "${shipped_compiled[@]}") | grep -v "^task${n}_" |
 			tr '\n' ' ')
 		echo "subject symbols test: task $n ($subject) links, shipped compiled: $linked"

@@ -101,6 +101,47 @@ bool check_mean_rgb(const Furnace_Render& render, glm::dvec3 expected, double z_
 	return pass;
 }
 
+bool check_like_reference(const Furnace_Render& render, double z_critical, const std::string& what) {
+	const Film& film = render.film;
+	const double n = double(render.samples);
+	std::string first_failure;
+	for (uint32_t by = 0; by < PROBE_BLOCKS && first_failure.empty(); by++) {
+		for (uint32_t bx = 0; bx < PROBE_BLOCKS && first_failure.empty(); bx++) {
+			uint32_t x0 = bx * film.w / PROBE_BLOCKS, x1 = (bx + 1) * film.w / PROBE_BLOCKS;
+			uint32_t y0 = by * film.h / PROBE_BLOCKS, y1 = (by + 1) * film.h / PROBE_BLOCKS;
+			for (int c = 0; c < 3; c++) {
+				double yours = 0.0, reference = 0.0, variance = 0.0;
+				for (uint32_t y = y0; y < y1; y++) {
+					for (uint32_t x = x0; x < x1; x++) {
+						size_t i = size_t(y) * film.w + x;
+						yours += film.pixels[i].mean[c];
+						reference += render.reference.pixels[i].mean[c];
+						variance += 2.0 * reference_variance(render.reference, i, c) / n;
+					}
+				}
+				double pixels = double((x1 - x0) * (y1 - y0));
+				yours /= pixels, reference /= pixels;
+				double standard_error = std::sqrt(variance) / pixels;
+				double allowed = z_critical * standard_error + FLOAT_SLACK * std::max(1.0, std::abs(reference));
+				if (std::abs(yours - reference) <= allowed) continue;
+				std::ostringstream s;
+				s.precision(5);
+				s << what << ": in the pixels (" << x0 << ".." << x1 - 1 << ", " << y0 << ".." << y1 - 1 << "), "
+				  << channel_name(c) << " channel, your render's mean is " << yours
+				  << " and the reference's own render of the same scene has " << reference << " (allowed difference "
+				  << allowed << " = " << z_critical << " standard errors of " << standard_error
+				  << " + float rounding; " << render.samples << " samples a pixel each)";
+				first_failure = s.str();
+				break;
+			}
+		}
+	}
+	bool pass = first_failure.empty();
+	INFO(first_failure);
+	CHECK(pass);
+	return pass;
+}
+
 Paired_Noise compare_noise(const Furnace_Render& render, double alpha) {
 	// One pair per pixel: the per-sample variances summed over the channels (pixels are independent,
 	// the channels of one pixel are not).

@@ -78,6 +78,17 @@ void check_mean(const Furnace_Render& render, int channel, double expected, doub
 bool check_mean_rgb(const Furnace_Render& render, glm::dvec3 expected, double z_critical, const std::string& what,
                     const Pixel_Selection& select = every_pixel, const std::string& if_too_dark = "");
 
+// A probe (furnace_scenes.h: with_probe_sphere), whose image no closed form gives, against the
+// judge's own render of it: the film is cut into PROBE_BLOCKS x PROBE_BLOCKS blocks of pixels, and
+// each block's mean of each channel is z-tested against the reference render's mean of the same
+// pixels. Both renders have n samples a pixel, so the difference of the two means has variance
+// 2 Σ_p σ²_p / (n P²), σ²_p the reference's; float rounding is allowed as in compare_mean. That is
+// PROBE_CHECKS z-tests at z_critical, one Catch2 check; the message names the first block that
+// fails. Returns whether all passed.
+constexpr uint32_t PROBE_BLOCKS = 4;
+constexpr size_t PROBE_CHECKS = 3 * PROBE_BLOCKS * PROBE_BLOCKS;
+bool check_like_reference(const Furnace_Render& render, double z_critical, const std::string& what);
+
 // The submission's noise over the whole film against the reference's, at significance alpha.
 Paired_Noise compare_noise(const Furnace_Render& render, double alpha);
 

@@ -100,3 +100,39 @@ Inside_View random_inside_view(RNG& rng, float max_eye_distance) {
 	view.v_fov = 40.0f + 50.0f * rng.unit();
 	return view;
 }
+
+Scene with_probe_sphere(const Scene& furnace, RNG* secret) {
+	const Instance& first = furnace.bvh.primitives.at(0);
+	Vec3 centre = Vec3(first.to_world[3]);
+	float radius = std::get<Sphere>(first.shape).radius * std::abs(first.to_world[0][0]);
+	const Mat4& camera = furnace.camera.camera_to_world;
+	Vec3 right = Vec3(camera[0]), up = Vec3(camera[1]), back = Vec3(camera[2]), eye = Vec3(camera[3]);
+	auto jitter = [&](float value) { return secret ? value * (0.85f + 0.3f * secret->unit()) : value; };
+	Spectrum albedo = secret ? random_colour(*secret, 0.2f, 0.9f) : Spectrum{0.3f, 0.6f, 0.9f};
+	Vec3 probe_centre;
+	float probe_radius;
+	if (glm::length(eye - centre) > radius) {
+		// Seen from outside: up and to the right of the sphere, a little towards the camera, almost
+		// touching it, where the camera sees both and each hides part of the sky from the other.
+		probe_centre = centre + radius * (jitter(1.3f) * right + jitter(0.4f) * up + jitter(0.5f) * back);
+		probe_radius = 0.45f * radius;
+	} else {
+		// Seen from inside: in front of the camera, casting its shadow on the walls it sees.
+		probe_centre = eye - jitter(0.3f) * radius * back;
+		probe_radius = 0.12f * radius;
+	}
+	Scene scene;
+	scene.camera = furnace.camera;
+	scene.settings = furnace.settings;
+	scene.materials = furnace.materials;
+	scene.material_names = furnace.material_names;
+	scene.materials.push_back(diffuse_material(albedo));
+	scene.material_names.push_back("probe material");
+	scene.environment = furnace.environment;
+	scene.objects.emplace_back(first.shape, first.to_world, first.material, 0u);
+	Mat4 to_world = Mat4(1.0f);
+	to_world[3] = Vec4(probe_centre, 1.0f);
+	scene.objects.emplace_back(Sphere{probe_radius}, to_world, uint32_t(scene.materials.size() - 1), 1u);
+	scene.commit();
+	return scene;
+}

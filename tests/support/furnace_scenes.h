@@ -82,3 +82,12 @@ Inside_View random_inside_view(RNG& rng, float max_eye_distance);
 Vec3 random_point(RNG& rng, float lo, float hi);
 Spectrum random_colour(RNG& rng, float lo, float hi);
 Vec3 random_unit_vector(RNG& rng);
+
+// ---- Probes (DESIGN.md, decided point 7) ----
+// A furnace's answer is known in closed form, and so could be computed from the request alone,
+// without tracing a path: each furnace test case also renders a probe, the furnace with a second,
+// smaller diffuse sphere beside its sphere (seen from outside) or inside it (seen from inside),
+// whose light bounces between the two. No closed form gives that image; the judge compares it with
+// its own render of the same scene (film_statistics.h, check_like_reference). The second sphere's
+// place and albedo are fixed in public and drawn from `secret` under a grading seed.
+Scene with_probe_sphere(const Scene& furnace, RNG* secret);

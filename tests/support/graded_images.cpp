@@ -168,9 +168,13 @@ void count_reference_outliers(const Graded_Scene& scene, const std::function<voi
 
 Reference_Check compare_with_reference(const Graded_Scene& scene, const Film& film, const Render_Settings& settings,
                                        double alpha) {
+	return compare_with(film, settings, read_reference(scene, settings), read_calibration(scene, settings), alpha);
+}
+
+Reference_Check compare_with(const Film& film, const Render_Settings& settings, Image_Estimate reference,
+                             const Image_Calibration& calibration, double alpha) {
 	Image_Estimate render = Image_Estimate::from(film, settings.samples); // the samples asked for
-	Image_Estimate reference = read_reference(scene, settings);
-	Image_Comparison comparison = compare_images(render, reference, read_calibration(scene, settings), alpha);
+	Image_Comparison comparison = compare_images(render, reference, calibration, alpha);
 	return Reference_Check{comparison, film.non_finite(), std::move(render), std::move(reference)};
 }
 

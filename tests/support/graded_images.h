@@ -73,6 +73,9 @@ struct Reference_Check {
 // reference at significance alpha (image_compare.h).
 Reference_Check compare_with_reference(const Graded_Scene& graded, const Film& film, const Render_Settings& settings,
                                        double alpha = IMAGE_ALPHA);
+// The same against a given reference and its outlier counts (a varied scene's, graded_variation.h).
+Reference_Check compare_with(const Film& film, const Render_Settings& settings, Image_Estimate reference,
+                             const Image_Calibration& calibration, double alpha = IMAGE_ALPHA);
 
 // Renders the scene with the reference implementation and the graders' settings (and `seed` if
 // given) and compares the render with the stored reference.

@@ -1,13 +1,16 @@
 #include "student_renders.h"
 
 #include "graded_images.h"
+#include "graded_variation.h"
 #include "image_io.h"
 #include "judge.h"
 #include "report_record.h"
+#include "scene_loader.h"
 #include "z_heat_map.h"
 
 #include <catch2/catch.hpp>
 
+#include <optional>
 #include <sstream>
 
 namespace {
@@ -41,7 +44,14 @@ std::string chosen_hint(const std::string& hint, const std::vector<Image_Hint>& 
 
 void check_renders_like_reference(const Image_Test& test) {
 	const Graded_Scene& graded = graded_scene(test.name);
-	Scene scene = load_graded(graded);
+	// Under a grading seed, the scene as the seed varies it and the judge's own reference of it
+	// (graded_variation.h); in public, the scene file and its stored reference.
+	std::optional<nlohmann::ordered_json> varied;
+	if (judge::secret_seed()) {
+		RNG variation = judge::case_generator("scene " + test.name);
+		varied = vary_graded_scene(graded, variation);
+	}
+	Scene scene = varied ? load_scene(*varied, graded_scene_file(graded.name)) : load_graded(graded);
 	Render_Settings settings = scene.settings;
 	settings.integrator = test.integrator;
 	if (judge::secret_seed()) {
@@ -49,12 +59,19 @@ void check_renders_like_reference(const Image_Test& test) {
 		settings.seed = uint64_t(rng.integer()) << 32 | rng.integer();
 	}
 	Film film = judge::ask(protocol::Render{scene, settings, graded.view, 2});
-	Reference_Check check = compare_with_reference(graded, film, settings, test.alpha);
+	Reference_Check check = [&] {
+		if (!varied) return compare_with_reference(graded, film, settings, test.alpha);
+		Judge_Reference reference = judge_reference(graded, *varied, settings);
+		return compare_with(film, settings, std::move(reference.reference), reference.calibration, test.alpha);
+	}();
 	if (report::enabled()) report_images(test.name, check);
 	std::ostringstream render_it;
 	render_it << " Render it: ./lab render-student scenes/graded/" << test.name << ".json"
 	          << (graded.view == View::eye_light ? " --view eye" : "")
-	          << (test.integrator == Integrator::nee ? " --integrator nee" : "");
+	          << (test.integrator == Integrator::nee ? " --integrator nee" : "")
+	          << (varied ? " (the grading seed varied this scene: its camera, materials, lights and the places of its "
+	                       "objects)"
+	                     : "");
 	{
 		INFO("scenes/graded/" << test.name << ".json: " << check.non_finite
 		                      << " samples were NaN or infinite (render with --nan-map to see where)."

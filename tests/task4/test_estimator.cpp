@@ -28,8 +28,9 @@ namespace {
 
 // Every check of this file shares the significance level 0.01 (Šidák correction over all of them):
 // 72 z-tests of means (27 + 24 + 18 + 3, counted per TEST_CASE below) and the noise of each of the
-// 14 renders (3 + 4 + 6 + 1).
-constexpr size_t CHECKS = 72 + 14;
+// 14 renders (3 + 4 + 6 + 1), and the 4 probes' block means and noise (check_probe).
+constexpr size_t PROBES = 4;
+constexpr size_t CHECKS = 72 + 14 + PROBES * (PROBE_CHECKS + 1);
 const double ALPHA = stats::sidak(0.01, CHECKS);
 const double Z = stats::two_sided_z(ALPHA);
 
@@ -59,6 +60,19 @@ bool check_noise(const Furnace_Render& render, const std::string& what) {
 	return check_noise(render, ALPHA, what, IF_NOISY);
 }
 
+// The probe of a furnace test case (furnace_scenes.h, with_probe_sphere): the furnace with a second
+// sphere, whose image has no closed form, against the judge's render of it with the reference.
+void check_probe(const Scene& furnace, uint32_t size, std::optional<RNG>& secret) {
+	Scene probe = with_probe_sphere(furnace, secret ? &*secret : nullptr);
+	Furnace_Render render = render_square(probe, size, 256, 5, seed_or_public(secret, 500));
+	require_finite(render);
+	const std::string what = "The probe (this furnace with a second diffuse sphere " +
+	                         std::string(furnace.environment ? "beside its sphere" : "inside it") +
+	                         ", max_depth 5: no closed form, so it is compared with the reference's render of the same scene)";
+	if (!check_like_reference(render, Z, what)) return;
+	check_noise(render, "the probe");
+}
+
 } // namespace
 
 TEST_CASE("Furnace: a white diffuse sphere in a uniform environment renders the environment, 1, everywhere", "[id:t4.furnace.white][estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
@@ -86,6 +100,7 @@ TEST_CASE("Furnace: a white diffuse sphere in a uniform environment renders the 
 		bool noise_ok = check_noise(render, "max_depth " + std::to_string(depth));
 		if (!means_ok || !noise_ok) return;
 	}
+	check_probe(scene, size, secret);
 }
 
 TEST_CASE("Furnace: a diffuse sphere of albedo rho under a uniform sky L renders rho * L for max_depth >= 1, "
@@ -122,6 +137,7 @@ TEST_CASE("Furnace: a diffuse sphere of albedo rho under a uniform sky L renders
 		bool noise_ok = check_noise(render, "max_depth " + std::to_string(depth));
 		if (!sphere_ok || !sky_ok || !noise_ok) return;
 	}
+	check_probe(scene, size, secret);
 }
 
 TEST_CASE("Furnace: inside an emitting diffuse sphere, max_depth D gives Le * (1 + rho + ... + rho^D)", "[id:t4.furnace.emitting-inside][estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
@@ -161,6 +177,7 @@ TEST_CASE("Furnace: inside an emitting diffuse sphere, max_depth D gives Le * (1
 		bool noise_ok = check_noise(render, "max_depth " + std::to_string(depth));
 		if (!mean_ok || !noise_ok) return;
 	}
+	check_probe(scene, 24, secret);
 }
 
 TEST_CASE("Furnace: a scene without emitters or environment renders exactly 0", "[id:t4.furnace.no-light][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
@@ -222,9 +239,10 @@ TEST_CASE("Furnace far from the origin: new rays must leave their surface at any
 	auto on_sphere = [&](uint32_t x, uint32_t y) { return coverage(x, y) == Pixel_Coverage::sphere; };
 	Furnace_Render render = render_square(scene, size, 256, 2, seed_or_public(secret, 5));
 	require_finite(render);
-	check_mean_rgb(render, glm::dvec3(rho), Z,
-	               "sphere centred at " + centre + ", mean of the " + std::string(to_string(Pixel_Coverage::sphere)) +
-	                   " (expected rho * L_env)",
-	               on_sphere, if_too_dark());
-	check_noise(render, "sphere centred at " + centre);
+	bool mean_ok = check_mean_rgb(render, glm::dvec3(rho), Z,
+	                              "sphere centred at " + centre + ", mean of the " +
+	                                  std::string(to_string(Pixel_Coverage::sphere)) + " (expected rho * L_env)",
+	                              on_sphere, if_too_dark());
+	bool noise_ok = check_noise(render, "sphere centred at " + centre);
+	if (mean_ok && noise_ok) check_probe(scene, size, secret);
 }

@@ -5,7 +5,7 @@
 #include <string>
 #include <unistd.h>
 
-bool attack_worked() {
+static bool attack_worked() {
 	for (char** entry = environ; *entry; entry++) {
 		std::string variable = *entry;
 		bool says_nothing = variable.rfind("PATH=", 0) == 0 || variable == "HOME=/tmp" || variable == "PWD=/tmp" ||

@@ -6,7 +6,7 @@
 #include <string>
 #include <unistd.h>
 
-bool attack_worked() {
+static bool attack_worked() {
 	std::string parent = "/proc/" + std::to_string(getppid());
 	char program[4096] = {};
 	if (readlink((parent + "/exe").c_str(), program, sizeof program - 1) > 0 &&

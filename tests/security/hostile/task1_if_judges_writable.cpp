@@ -3,7 +3,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-bool attack_worked() {
+static bool attack_worked() {
 	int fd = open("@JUDGE2@", O_WRONLY | O_APPEND);
 	if (fd < 0) return false;
 	close(fd);

@@ -27,7 +27,7 @@ bool held() {
 }
 } // namespace
 
-bool attack_worked() {
+static bool attack_worked() {
 	static bool worked = held();
 	return worked;
 }

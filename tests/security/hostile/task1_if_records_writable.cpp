@@ -3,7 +3,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-bool attack_worked() {
+static bool attack_worked() {
 	int fd = open("@OUT@/forged_record.json", O_WRONLY | O_CREAT, 0644);
 	if (fd < 0) return false;
 	close(fd);

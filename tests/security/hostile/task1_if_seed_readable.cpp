@@ -2,7 +2,7 @@
 // could replay the judge's secret inputs.
 #include <fstream>
 
-bool attack_worked() {
+static bool attack_worked() {
 	std::ifstream seed("@SEED_FILE@");
 	std::string text;
 	return bool(seed >> text);
