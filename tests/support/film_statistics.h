@@ -85,7 +85,7 @@ bool check_mean_rgb(const Furnace_Render& render, glm::dvec3 expected, double z_
 // 2 Σ_p σ²_p / (n P²), σ²_p the reference's; float rounding is allowed as in compare_mean. That is
 // PROBE_CHECKS z-tests at z_critical, one Catch2 check; the message names the first block that
 // fails. Returns whether all passed.
-constexpr uint32_t PROBE_BLOCKS = 4;
+constexpr uint32_t PROBE_BLOCKS = 2;
 constexpr size_t PROBE_CHECKS = 3 * PROBE_BLOCKS * PROBE_BLOCKS;
 bool check_like_reference(const Furnace_Render& render, double z_critical, const std::string& what);
 

@@ -20,12 +20,15 @@
 
 #include <catch2/catch.hpp>
 
+#include <optional>
 #include <string>
 
 namespace {
 
-// 18 z-tests (9 + 3 + 6, counted per TEST_CASE below) and the noise of each of the 3 renders.
-constexpr size_t CHECKS = 18 + 3;
+// 18 z-tests (9 + 3 + 6, counted per TEST_CASE below) and the noise of each of the 3 renders, and
+// each test case's probe: its block means and its noise (check_probe).
+constexpr size_t PROBES = 3;
+constexpr size_t CHECKS = 18 + 3 + PROBES * (PROBE_CHECKS + 1);
 const double ALPHA = stats::sidak(0.01, CHECKS);
 const double Z = stats::two_sided_z(ALPHA);
 
@@ -41,6 +44,21 @@ void check_noise(const Furnace_Render& render, const std::string& what) {
 	            "A mirror or glass sample weighs exactly the reflectance or the transmittance: the choice with "
 	            "probability F already accounts for Fresnel, so weights like 1 / F or 1 / (1 - F) on top make "
 	            "fireflies (handout §5.4)");
+}
+
+// The probe of a furnace test case (furnace_scenes.h, with_probe_sphere): the furnace with a diffuse
+// sphere beside or inside its sphere, seen through the mirror or the glass. No closed form gives it:
+// it is compared with the judge's render of it with the reference.
+void check_probe(const Scene& furnace, uint32_t size, std::optional<RNG>& secret) {
+	Scene probe = with_probe_sphere(furnace, secret ? &*secret : nullptr);
+	Furnace_Render render = render_square(probe, size, 256, 64, seed_or_public(secret, 500));
+	require_finite(render);
+	if (!check_like_reference(render, Z, "The probe (this furnace with a diffuse sphere beside or inside its sphere, "
+	                                     "max_depth 64: no closed form, so it is compared with the reference's render "
+	                                     "of the same scene; what the mirror or glass shows of it must be right)")) {
+		return;
+	}
+	check_noise(render, "the probe");
 }
 
 } // namespace
@@ -78,6 +96,7 @@ TEST_CASE("Glass furnace: a clear glass sphere in a uniform environment L = 1 re
 		}
 	}
 	check_noise(render, "the glass furnace");
+	check_probe(scene, size, secret);
 }
 
 TEST_CASE("Glass, seen from inside: the lab does not scale radiance by eta^2, so the view from inside a glass "
@@ -108,6 +127,7 @@ TEST_CASE("Glass, seen from inside: the lab does not scale radiance by eta^2, so
 		           "eta^2, 0.44 that it was divided by it; the lab does neither, material.h and handout §5.4)");
 	}
 	check_noise(render, "the view from inside a glass sphere");
+	check_probe(scene, 16, secret);
 }
 
 TEST_CASE("Mirror furnace: a mirror sphere of reflectance R in a uniform environment L = 1 renders R", "[id:t5.furnace.mirror][estimate][uses:Mirror::scatter]") {
@@ -134,4 +154,5 @@ TEST_CASE("Mirror furnace: a mirror sphere of reflectance R in a uniform environ
 		check_mean(render, c, 1.0, Z, std::string("mean of the ") + to_string(Pixel_Coverage::background), on_sky);
 	}
 	check_noise(render, "the mirror furnace");
+	check_probe(scene, size, secret);
 }

@@ -5,6 +5,7 @@
 // (the judge links the reference of every task, so uv_to_direction and direction_to_uv called here
 // are the reference's).
 #include "env_light.h"
+#include "film_statistics.h"
 #include "judge.h"
 #include "rng.h"
 #include "sample_moments.h"
@@ -22,14 +23,15 @@ namespace env_test {
 // chi-square tests: the uniform sampler and four importance-sampled maps (test_uniform.cpp,
 // test_importance.cpp); the estimates: z-tests of the constant map's three channels
 // (test_importance.cpp), two one-texel maps (test_bright_texel.cpp), and three channels of three
-// groups of pixels in test_render.cpp (sky and sphere under Env_Map, sphere under Env_Constant),
-// and the noise of each of those five estimates (paired_noise.h). z-tests take their
-// standard error from the reference's estimator (reference_weights below, the judge's render in
-// test_render.cpp), never from the student's samples.
+// groups of pixels in test_render.cpp (sky and sphere under Env_Map, sphere under Env_Constant)
+// and the block means of its two probes, and the noise of each of those seven estimates
+// (paired_noise.h). z-tests take their standard error from the reference's estimator
+// (reference_weights below, the judge's render in test_render.cpp), never from the student's
+// samples.
 constexpr double ALPHA = 0.01;
 constexpr size_t CHI2_TESTS = 5;
-constexpr size_t Z_TESTS = 3 + 2 + 9;
-constexpr size_t NOISE_CHECKS = 1 + 2 + 2;
+constexpr size_t Z_TESTS = 3 + 2 + 9 + 2 * PROBE_CHECKS;
+constexpr size_t NOISE_CHECKS = 1 + 2 + 2 + 2;
 
 inline double chi2_alpha() {
 	return stats::sidak(ALPHA, CHI2_TESTS);

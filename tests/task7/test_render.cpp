@@ -10,6 +10,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <optional>
+
 using namespace env_test;
 
 namespace {
@@ -32,14 +34,51 @@ Colours colours(const std::string& what) {
 	return c;
 }
 
-// The student's render (in the subject, with the student's environment code) of the sphere, and the
-// reference's (student_furnaces.h).
-Furnace_Render render_sphere(const Environment& environment, const Colours& c) {
+// The diffuse sphere under `environment`.
+Scene sphere_under(const Environment& environment, const Colours& c) {
 	Furnace_Options options;
 	options.environment = c.sky;
 	Scene scene = sphere_seen_from_outside(diffuse_material(c.albedo), options, DISTANCE, V_FOV);
 	scene.environment = environment;
-	return render_square(scene, SIZE, 64, 4, c.seed);
+	return scene;
+}
+
+// The student's render (in the subject, with the student's environment code) of the sphere, and the
+// reference's (student_furnaces.h).
+Furnace_Render render_sphere(const Environment& environment, const Colours& c) {
+	return render_square(sphere_under(environment, c), SIZE, 64, 4, c.seed);
+}
+
+// A map whose light no closed form gives: every texel its own colour, a sky bright where it faces
+// one way (public, or drawn from the grading seed).
+HDR_Image probe_map(const std::string& what) {
+	std::optional<RNG> secret;
+	if (judge::secret_seed()) secret = judge::case_generator(what);
+	HDR_Image map(16, 8);
+	Vec3 towards = secret ? glm::normalize(Vec3{secret->unit(), secret->unit(), secret->unit()} - 0.5f)
+	                      : glm::normalize(Vec3{1.0f, 1.0f, 0.5f});
+	for (uint32_t j = 0; j < map.h; j++) {
+		for (uint32_t i = 0; i < map.w; i++) {
+			Vec3 dir = uv_to_direction(Vec2((i + 0.5f) / map.w, (j + 0.5f) / map.h));
+			float glow = 0.2f + 3.0f * std::pow(std::max(0.0f, glm::dot(dir, towards)), 4.0f);
+			Spectrum tint = secret ? Spectrum{0.5f + secret->unit(), 0.5f + secret->unit(), 0.5f + secret->unit()}
+			                       : Spectrum{1.0f, 0.8f + 0.4f * float(i % 2), 1.2f - 0.4f * float(j % 2)};
+			map.at(i, j) = glow * tint;
+		}
+	}
+	return map;
+}
+
+// A probe (furnace_scenes.h): a scene no closed form answers, against the judge's render of it with
+// the reference, its block means and its noise.
+void check_probe(const Scene& probe, uint64_t seed, const std::string& what) {
+	Furnace_Render film = render_square(probe, SIZE, 64, 4, seed);
+	{
+		INFO("non-finite samples in the probe's render (handout §7.4)");
+		CHECK(film.film.non_finite() == 0);
+	}
+	if (!check_like_reference(film, z_critical(), what)) return;
+	check_noise(film, noise_alpha(), what, "sample, pdf and evaluate must describe the same density (handout §7.4)");
 }
 
 void check_channels(const Furnace_Render& film, const Spectrum& expected, Pixel_Coverage::Kind kind,
@@ -73,6 +112,9 @@ TEST_CASE("a diffuse sphere under a constant Env_Map renders albedo * L", "[id:t
 	check_noise(film, noise_alpha(), "diffuse sphere under a constant Env_Map",
 	            "Weights L / pdf must stay bounded: sample, pdf and evaluate must describe the same density "
 	            "(handout §7.4)");
+	check_probe(sphere_under(Env_Map(probe_map("probe under Env_Map"), true), c), c.seed + 1,
+	            "The probe (the sphere under an Env_Map whose texels all differ: no closed form, so it is compared "
+	            "with the reference's render of the same scene)");
 }
 
 TEST_CASE("a diffuse sphere under Env_Constant renders albedo * L", "[id:t7.render.env-constant][estimate][task7][render][statistical][uses:Env_Map::sample][uses:Env_Map::pdf][uses:Env_Map::evaluate][uses:Uniform::sample]") {
@@ -88,4 +130,9 @@ TEST_CASE("a diffuse sphere under Env_Constant renders albedo * L", "[id:t7.rend
 	               "(handout §7.2)");
 	check_noise(film, noise_alpha(), "diffuse sphere under Env_Constant",
 	            "Uniform directions have the constant density 1 / (4 pi): sample and pdf must agree (handout §7.2)");
+	std::optional<RNG> secret;
+	if (judge::secret_seed()) secret = judge::case_generator("probe under Env_Constant");
+	check_probe(with_probe_sphere(sphere_under(Env_Constant{c.sky}, c), secret ? &*secret : nullptr), c.seed + 1,
+	            "The probe (the sphere with a second one beside it under Env_Constant: no closed form, so it is "
+	            "compared with the reference's render of the same scene)");
 }

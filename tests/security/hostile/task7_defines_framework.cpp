@@ -6,7 +6,13 @@
 
 struct Pathtracer;
 struct Render_Options;
-struct HDR_Image;
+
+struct Film {
+	uint64_t non_finite() const;
+};
+uint64_t Film::non_finite() const {
+	return 0; // no NaN is ever reported
+}
 
 Film render(const Pathtracer& pathtracer, const Render_Options& options) {
 	throw 0; // whatever this version would do
@@ -14,13 +20,6 @@ Film render(const Pathtracer& pathtracer, const Render_Options& options) {
 
 float RNG::unit() {
 	return 0.5f;
-}
-
-struct Film {
-	uint64_t non_finite() const;
-};
-uint64_t Film::non_finite() const {
-	return 0; // no NaN is ever reported
 }
 
 uint64_t film_non_finite_count_is_mine = 0;
