@@ -53,3 +53,59 @@ for n in 1 2 3 4 5 6 7; do
 	done
 done
 echo "subject symbols test: no subject links the framework code that can answer its own task"
+
+# A subject runs the student's functions, never another copy: no input of a submitted task N's link
+# (LAB_SUBJECT_LINK_N: the other tasks, the subject's main, the framework) defines one of task N's
+# functions (the names its file may define, grading/checks/, and for task 3 its BVH's build and
+# hit), weakly or not, where the linker could choose it over the student's.
+# shellcheck source=/dev/null
+source "$kit"
+for n in 1 2 3 4 5 6 7; do
+	link_var=LAB_SUBJECT_LINK_$n
+	mapfile -t inputs < <(tr ' ' '\n' <<<"${!link_var}" | grep '^/')
+	defined=$(nm --defined-only --format=posix "${inputs[@]}" 2>/dev/null | awk 'NF >= 2 { print $1 }' | sort -u)
+	found=$(grep -xF -f "$LAB_CHECKS_DIR/task${n}_symbols.txt" <<<"$defined" || true)
+	[ "$n" != 3 ] || found+=$(c++filt <<<"$defined" | grep -E '^BVH<.*>::(build|hit)\(' || true)
+	[ -z "$found" ] || fail "task $n's kit link defines task $n's own functions: $(c++filt <<<"$found" | tr '\n' ' ')"
+done
+echo "subject symbols test: no kit link defines a function of its own task"
+
+# W^X in the file: no segment of a subject is both writable and executable, its stack is not
+# executable, and the pages mapped executable hold code alone: an executable segment starts on a
+# page of its own and no other segment's bytes share its first or last page (lld without
+# -z separate-code maps the read-only data before .text into .text's first page, executable).
+check_segments() { # PROGRAM
+	readelf -lW "$1" | awk -v program="$1" '
+		function hex(text,   value, k) { # 0x... (mawk has no strtonum)
+			value = 0
+			for (k = 3; k <= length(text); k++) value = value * 16 + index("0123456789abcdef", tolower(substr(text, k, 1))) - 1
+			return value
+		}
+		function page_down(x) { return x - x % 4096 }
+		function page_up(x) { return page_down(x + 4095) }
+		$1 == "GNU_STACK" && $0 ~ / RWE / { bad = bad " an executable stack;" }
+		$1 == "LOAD" {
+			n++
+			offset[n] = hex($2); size[n] = hex($5)
+			flags[n] = substr($0, index($0, $6) + length($6))
+			executable[n] = flags[n] ~ /E/
+			if (executable[n] && flags[n] ~ /W/) bad = bad " a writable and executable segment;"
+		}
+		END {
+			for (i = 1; i <= n; i++) {
+				if (!executable[i]) continue
+				from = page_down(offset[i]); to = page_up(offset[i] + size[i])
+				for (j = 1; j <= n; j++) {
+					if (j != i && size[j] > 0 && offset[j] < to && offset[j] + size[j] > from) {
+						bad = bad " other bytes in an executable page (segment " j ");"
+					}
+				}
+			}
+			if (bad != "") { print program ":" bad; exit 1 }
+		}' || fail "$1 maps something executable that is not its code"
+}
+for n in 1 2 3 4 5 6 7; do
+	check_segments "$subjects/subject_task${n}_student"
+	check_segments "$tmp/graded/work/task$n/subject_task$n"
+done
+echo "subject symbols test: every subject maps only code executable, and nothing both writable and executable"
