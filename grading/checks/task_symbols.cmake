@@ -1,0 +1,27 @@
+# cmake -DOUT=FILE -DOWN=OBJECTS -DOTHERS=OBJECTS -P task_symbols.cmake (grading/checks/CMakeLists.txt):
+# writes to FILE, sorted, the global names OWN defines strongly, and those it defines weakly that
+# OTHERS do not define.
+function(defined_names out filter)
+	execute_process(COMMAND nm -g --defined-only --format=posix ${ARGN} OUTPUT_VARIABLE listing
+		RESULT_VARIABLE status ERROR_QUIET)
+	if(NOT status EQUAL 0)
+		message(FATAL_ERROR "nm failed on ${ARGN}")
+	endif()
+	string(REPLACE "\n" ";" lines "${listing}")
+	set(names "")
+	foreach(line IN LISTS lines)
+		if(line MATCHES "^([^ ]+) (${filter})( |$)")
+			list(APPEND names "${CMAKE_MATCH_1}")
+		endif()
+	endforeach()
+	set(${out} ${names} PARENT_SCOPE)
+endfunction()
+defined_names(strong "[A-UX-Z]" ${OWN})
+defined_names(weak "[VWu]" ${OWN})
+defined_names(others "[A-Za-z]" ${OTHERS})
+list(REMOVE_ITEM weak ${others})
+set(names ${strong} ${weak})
+list(REMOVE_DUPLICATES names)
+list(SORT names)
+string(REPLACE ";" "\n" text "${names}")
+file(WRITE ${OUT} "${text}\n")
