@@ -52,11 +52,11 @@ async function main() {
 	const stubs = path.join(lab, "student"), reference = path.join(lab, "reference");
 	const names = taskFileNames(stubs);
 	const { submissions, empty } = readClass(options.submissions, names);
-	const out = openReportFolder(options.out);
-	// Loaded only now, so that a missing installation is not mistaken for bad input.
+	// Loaded only now, so that bad input is reported as such where Dolos is missing too.
 	const { compareTask } = await import("./compare.mjs").catch(error => {
 		throw new InputError(`similarity: Dolos is not installed (${error.message.split("\n")[0]}): run ./lab setup similarity`, 1);
 	});
+	const out = openReportFolder(options.out);
 
 	const tasks = [];
 	for (const name of names) {
@@ -64,14 +64,14 @@ async function main() {
 		const submitted = files.length;
 		files.push({ name: "reference", kind: "reference", path: path.join(reference, name), text: readText(reference, name) });
 		const stub = { path: path.join(stubs, name), text: readText(stubs, name) };
-		const pairs = submitted === 0 ? [] : await compareTask(files, stub);
+		const pairs = await compareTask(files, stub);
 		pairs.sort((x, y) => y.similarity - x.similarity || longest(y) - longest(x) ||
 			x.a.name.localeCompare(y.a.name) || x.b.name.localeCompare(y.b.name));
 		tasks.push({ number: Number(name[4]), file: name, submitted, pairs });
 	}
 	writeReport(out, { tasks, threshold: options.threshold, class: options.submissions, submissions, empty });
 	const flagged = tasks.reduce((n, task) => n + task.pairs.filter(p => p.similarity >= options.threshold).length, 0);
-	console.log(`similarity: ${submissions.length} submissions, ${flagged} pairs at or above ${options.threshold}: ` +
+	console.log(`similarity: ${submissions.length} submissions with task files, ${flagged} pairs at or above ${options.threshold}: ` +
 		path.join(out, "index.html"));
 	for (const id of empty) console.error(`similarity: ${path.join(options.submissions, id)} holds no task file (listed in the report)`);
 }
