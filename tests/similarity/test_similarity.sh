@@ -30,7 +30,7 @@ cp "$root/student/task2_shapes.cpp" "$class/kim/"
 # gus: the reference with every name of its own changed (functions, constants, variables).
 sed -E 's/\bEDGE_SLACK\b/TOL/g; s/\bmiss\b/nothing/g; s/\bparallel\b/flat/g; s/\bhit_at\b/found/g;
 	s/\bin_bounds\b/ok/g; s/\bret\b/res/g; s/\be1\b/ab/g; s/\be2\b/ac/g; s/\bs\b/w/g; s/\bn\b/m/g;
-	s/\bdet\b/dd/g; s/\binv_det\b/id/g; s/\bu\b/p/g; s/\bv\b/r/g; s/\bt\b/x/g; s/\bnormal\b/nrm/g;
+	s/\bdet\b/dd/g; s/\binv_det\b/id/g; s/\bu\b/p/g; s/\bv\b/r/g; s/\bt\b/x/g; s/([^.])\bnormal\b/\1nrm/g;
 	s/\bo\b/org/g; s/\bd\b/dir2/g; s/\bl\b/dl/g; s/\bdisc\b/D/g; s/\bq\b/qq/g; s/\bt0\b/xa/g;
 	s/\bt1\b/xb/g; s/\boutward\b/out/g' "$root/reference/task2_shapes.cpp" >"$class/gus/task2_shapes.cpp"
 sed -E 's/\bout_dir\b/wo/g; s/\bdir\b/w/g; s/\bwas_internal\b/tir/g; s/\bcos_theta\b/mu/g;
