@@ -7,7 +7,7 @@
 import { Dolos } from "@dodona/dolos-lib";
 import { File } from "@dodona/dolos-core";
 
-// compareTask(files, stub): files are { name, path, text } (at least one), stub is { path, text }.
+// compareTask(files, stub): files are { name, path, text }, stub is { path, text }.
 // Returns every pair of files, each { a, b, similarity, fragments }: a and b the two files (in the
 // order of `files`), similarity in [0, 1], and the code they share as fragments, each
 // { a: {from, to}, b: {from, to}, kgrams } with 1-based line numbers, longest first.
