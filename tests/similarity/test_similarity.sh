@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The similarity report (label similarity): a synthetic class compared by grading/similarity (Dolos).
-#   - Honest solutions of tasks 2 and 5 written from the handouts (class/ada, ben, cai, dee), hal's
-#     task 1 alone, ivy's folder without a task file, jan's and kim's unchanged stub of task 2.
+#   - Honest solutions of tasks 2 and 5 written from the handouts (class/ada, ben, cai, dee; each
+#     earns full points from ./lab grade-submission), hal's task 1 alone, ivy's folder without a
+#     task file, jan's and kim's unchanged stub of task 2.
 #   - Planted in both tasks: eve hands in ben's task 2 and cai's task 5 verbatim (copied here),
 #     fay cai's task 2 and ben's task 5 with every name of their own changed and their helpers and
 #     functions reordered (class/fay), gus the reference with its names changed (sed below).
