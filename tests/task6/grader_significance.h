@@ -10,9 +10,9 @@ namespace task6 {
 constexpr double ALPHA = 0.01;
 // test_sample_incoming.cpp: the coin (1). test_direct_lighting.cpp: three strategies at a lit point
 // (3) and the mixture's noise there (1), the sphere light and its noise (2), two renders and their
-// noise (4), the variance comparison (1). test_reference_image.cpp: the image's z-tests and its
-// noise (2).
-constexpr size_t STATISTICAL_CHECKS = 1 + 4 + 2 + 4 + 1 + 2;
+// noise (4), the variance comparison (1), and the three closed-form test cases' probes and their
+// noise (6). test_reference_image.cpp: the image's z-tests and its noise (2).
+constexpr size_t STATISTICAL_CHECKS = 1 + 4 + 2 + 4 + 1 + 6 + 2;
 
 inline double check_alpha() {
 	return stats::sidak(ALPHA, STATISTICAL_CHECKS);

@@ -88,6 +88,34 @@ void check_estimate(const std::vector<double>& student_samples, const std::vecto
 	CHECK(std::abs(z) <= task6::z_critical());
 }
 
+// A closed-form test case's probe (DESIGN.md, decided point 7): its scene with a black blocker that
+// hides part of the light from the receiver, so that no closed form the request reveals gives the
+// light that arrives. The student's estimate is z-tested against the reference's own estimate of it
+// (the difference of two means: the reference's variance over each one's samples), and its noise
+// against the reference's (two checks).
+void check_probe(const std::vector<double>& student_samples, const std::vector<double>& reference_samples,
+                 const std::string& what) {
+	Paired_Noise noise = compare_noise(student_samples, reference_samples, task6::check_alpha());
+	{
+		INFO(what << ": too noisy: " << describe(noise, "batch") << " (handout §6.1, §6.2)");
+		CHECK(noise.pass);
+	}
+	Sample_Moments student = moments(student_samples), reference = moments(reference_samples);
+	double error = std::sqrt(reference.variance / double(student.n) + reference.variance / double(reference.n));
+	double z = (student.mean - reference.mean) / error;
+	INFO(what << ": estimated " << student.mean << ", the reference's estimate " << reference.mean << " +- " << error
+	          << " (" << student.n << " samples each), z = " << z << " (critical " << task6::z_critical()
+	          << "). A blocker hides part of the light: light sampling must aim only at what the light sends, "
+	             "and a sample whose ray is blocked carries no light (handout §6.2)");
+	CHECK(std::abs(z) <= task6::z_critical());
+}
+
+// A black square of half-side `half_side`, parallel to the ceiling lights, centred at `centre`.
+void add_blocker(Scene& scene, Vec3 centre, float half_side) {
+	add_object(scene, ceiling_square(half_side, 0.0f), add_material(scene, diffuse_material(Spectrum{0.0f}), "blocker"),
+	           glm::translate(Mat4{1.0f}, centre));
+}
+
 // n camera samples of pixel (0, 0), with the film's per-sample RNG, from the student's renderer
 // (trace_pixel with the student's sample_incoming) in one request.
 std::vector<Spectrum> render_samples(const Scene& scene, const Render_Settings& settings, size_t n) {
@@ -148,6 +176,19 @@ TEST_CASE("BSDF sampling, light sampling and the mixture all estimate the light 
 	               estimate(pt, Strategy::mixture, point, lit.out_dir, 100000, reference_seed(mixture_seed)), expected,
 	               "sample_incoming's mixture, weighted attenuation * |cos| / pdf",
 	               ": a biased mean means the pdf does not match how the direction was drawn (handout §6.2)");
+
+	// The probe: a blocker half way up, off to one side of the receiver.
+	Scene probe;
+	add_object(probe, ceiling_square(lit.half_side, lit.height), add_material(probe, emitter(Spectrum{1.0f}), "light"));
+	add_blocker(probe, lit.position + 0.5f * (lit.height - lit.position.y) * Vec3{0.0f, 1.0f, 0.0f} +
+	                       Vec3{0.4f * lit.half_side, 0.0f, 0.0f},
+	            0.4f * lit.half_side);
+	probe.commit();
+	uint64_t probe_seed = sampling_seed("three strategies, probe", 14);
+	check_probe(estimate_mixture(probe, point, lit.out_dir, 100000, probe_seed),
+	            estimate(Pathtracer(probe, Render_Settings{}), Strategy::mixture, point, lit.out_dir, 100000,
+	                     reference_seed(probe_seed)),
+	            "the probe, this lit point with a blocker hiding part of the light");
 }
 
 TEST_CASE("the mixture estimates the light from a sphere: E = pi L (r/d)^2 cos(beta)", "[id:t6.lighting.sphere-light][estimate][task6][uses:sample_incoming]") {
@@ -171,6 +212,19 @@ TEST_CASE("the mixture estimates the light from a sphere: E = pi L (r/d)^2 cos(b
 	               estimate(Pathtracer(scene, Render_Settings{}), Strategy::mixture, point, normal, 100000,
 	                        reference_seed(seed)),
 	               expected, "sample_incoming's mixture under a sphere light (handout §6.2)");
+
+	// The probe: a black sphere half way to the light, off its axis, hides part of it.
+	Scene probe;
+	add_object(probe, Sphere{float(radius)}, add_material(probe, emitter(Spectrum{1.0f}), "light"),
+	           glm::translate(Mat4{1.0f}, Vec3{0.0f, float(distance), 0.0f}));
+	add_object(probe, Sphere{float(0.25 * radius)}, add_material(probe, diffuse_material(Spectrum{0.0f}), "blocker"),
+	           glm::translate(Mat4{1.0f}, Vec3{float(0.15 * radius), float(0.5 * distance), 0.0f}));
+	probe.commit();
+	uint64_t probe_seed = sampling_seed("sphere light, probe", 22);
+	check_probe(estimate_mixture(probe, point, normal, 100000, probe_seed),
+	            estimate(Pathtracer(probe, Render_Settings{}), Strategy::mixture, point, normal, 100000,
+	                     reference_seed(probe_seed)),
+	            "the probe, this sphere light with a black sphere hiding part of it");
 }
 
 TEST_CASE("under a small light, the mixture has a lower variance than BSDF sampling alone", "[id:t6.lighting.lower-variance][task6][uses:sample_incoming]") {
@@ -222,6 +276,16 @@ TEST_CASE("a diffuse floor under a square light renders as rho E / pi (max_depth
 		                   ", L = " + std::to_string(c.radiance) + " (the renderer with your sample_incoming, "
 		                   "handout §6.2)");
 	}
+
+	// The probe: the first floor with a blocker half way up, off to one side.
+	const Case& c = cases[0];
+	Scene probe = lit_floor(RHO, c.half_side, c.height, Spectrum{c.radiance}, Vec3{0.6f, 0.4f, 0.5f});
+	add_blocker(probe, Vec3{0.4f * c.half_side, 0.5f * c.height, 0.0f}, 0.4f * c.half_side);
+	probe.commit();
+	Render_Settings settings = one_pixel(c.seed + 1);
+	check_probe(channel_averages(render_samples(probe, settings, 50000)),
+	            channel_averages(reference_render_samples(probe, settings, 50000)),
+	            "the probe, this floor with a blocker hiding part of the light (the renderer with your sample_incoming)");
 }
 
 TEST_CASE("a light hidden behind a blocker gives exactly 0", "[id:t6.lighting.blocked][task6][uses:sample_incoming]") {
