@@ -97,7 +97,8 @@ std::map<int, Grade> grade_files(const Temp_Dir& dir, const std::map<int, std::s
 	// Each task's points: the rubric's for its test cases ("Task N: ..." in Gradescope's results.json).
 	std::map<int, double> points;
 	if (fs::exists(out / "results.json")) {
-		for (const auto& test : nlohmann::json::parse(read_file(out / "results.json")).at("tests")) {
+		nlohmann::json results = nlohmann::json::parse(read_file(out / "results.json"));
+		for (const auto& test : results.at("tests")) {
 			std::string name = test.at("name").get<std::string>();
 			if (name.rfind("Task ", 0) == 0) points[name[5] - '0'] += test.at("score").get<double>();
 		}

@@ -215,8 +215,9 @@ TEST_CASE("burning CPU earns nothing and is stopped by the CPU limit, which the 
 }
 
 TEST_CASE("an answer that declares a huge payload and sends nothing costs the judge no memory", "[security]") {
+	// Refused unread: more than any answer to its request can be (grading/judge/subject.h).
 	Grade declared = grade("task1_declared_huge_answer.cpp", 1, {}, "--time-limit 2");
-	require_nothing_earned(declared, "time limit");
+	require_nothing_earned(declared, "answer is too large");
 	INFO("the largest process of the grading held " << declared.largest_process_kib << " KiB");
 	CHECK(declared.largest_process_kib < 512 * 1024); // far below the 1 GiB declared
 }
