@@ -9,7 +9,9 @@
 // Where the estimator has zero variance the bound reduces to float rounding, FLOAT_SLACK. Russian
 // roulette keeps the expectation, so the same bounds hold with it (its noise is in the variance).
 // Each render may not be noisier than the reference's, pixel by pixel (the sign test,
-// paired_noise.h): noise or fireflies fail every time, not by chance.
+// paired_noise.h): noise or fireflies fail every time, not by chance. A closed form can be computed
+// from the request alone, without tracing: each test case ends with a probe no closed form answers
+// (check_probe, furnace_scenes.h), against the judge's own render of it.
 #include "film_statistics.h"
 #include "judge.h"
 #include "furnace_scenes.h"
