@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
@@ -109,7 +110,7 @@ std::map<int, Grade> grade_files(const Temp_Dir& dir, const std::map<int, std::s
 		bool not_built = fs::exists(out / (name + ".build.log"));
 		if (!not_built && !fs::exists(out / (name + ".json"))) continue; // not graded
 		Grade& grade = grades[task];
-		grade.points = points[task];
+		grade.points = std::max(0.0, points[task]); // failed requirements' penalties never go below 0 (rubric.h)
 		grade.largest_process_kib = largest_kib;
 		grade.seconds = seconds;
 		grade.report = read_file(out / "index.html");

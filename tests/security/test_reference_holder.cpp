@@ -94,9 +94,11 @@ TEST_CASE("becoming another program, or seeing what the grading built for an ear
 	std::map<int, Grade> grades = grade_files(dir, files, "");
 	require_stubs_earned_nothing(grades, {1, 7});
 	require_nothing_earned(grades[1], "generate_ray");
+	// The stub's text compiles where the earlier task's folder is out of sight (bubblewrap); where
+	// Landlock forbids it instead, the compiler stops at it.
 	INFO("task 7: " << grades[7].messages.substr(0, 2000));
-	CHECK(grades[7].built);
-	CHECK(grades[7].points == 0.0); // the stub's
+	CHECK((grades[7].built || grades[7].messages.find("Permission denied") != std::string::npos));
+	CHECK(grades[7].points == 0.0);
 }
 
 TEST_CASE("its own copy of an inline framework function is never the one the subject runs, graded whole",
