@@ -37,15 +37,38 @@ const char* const IF_NOISY =
 	"Look for weights that can grow without bound: a division by a small pdf or cosine (the weight is f |cos| / pdf, "
 	"handout §4.2), and for a Russian roulette that cuts paths more often than the albedo says (handout §4.3)";
 
+// What a self-intersection does (handout §4.2, spawn_ray.h): a new ray that starts at hit.position,
+// which rounding puts on either side of the surface, hits the surface it leaves, and the path loses
+// the light it would have found.
+const char* const SELF_INTERSECTION =
+	"a new ray that starts at hit.position hits the surface it leaves (self-intersection: rounding puts the hit point "
+	"on either side of the surface), and the path loses its light there. Start every new ray with spawn_ray(hit, "
+	"direction, ray.depth + 1) (spawn_ray.h), which moves its origin off the surface (handout §4.2)";
+
+// Set when the white furnace at max_depth 1 came out too dark while the BSDF's own test cases pass:
+// a path that bounces once off a convex sphere under the sky can then only lose light at that bounce,
+// by a self-intersection. Later furnaces then lead with it, not with the leads a self-intersection
+// also sets off there (max_depth's off-by-one, a division by a small pdf).
+bool self_intersection_found = false;
+
+bool bsdf_unit_tests_failed() {
+	for (const char* bsdf : {"Lambertian::scatter", "Lambertian::evaluate", "Lambertian::pdf"}) {
+		if (judge::unit_tests_failed(bsdf)) return true;
+	}
+	return false;
+}
 
 // Said of a furnace that is too dark while the BSDF's own test cases pass: the usual cause then.
 std::string if_too_dark() {
-	for (const char* bsdf : {"Lambertian::scatter", "Lambertian::evaluate", "Lambertian::pdf"}) {
-		if (judge::unit_tests_failed(bsdf)) return ""; // the note above names the BSDF
-	}
-	return "Too dark: a ray that starts exactly on the surface it leaves hits that surface again (self-intersection) "
-	       "and the path loses its light there. The next ray's dist_bounds.x must be above 0 and grow with "
-	       "|hit.position| (handout §4.2)";
+	if (bsdf_unit_tests_failed()) return ""; // the note above names the BSDF
+	return std::string("Too dark: ") + SELF_INTERSECTION;
+}
+
+// The lead for a furnace that fails after a self-intersection was found: fix that first.
+std::string lead(const std::string& otherwise) {
+	if (!self_intersection_found) return otherwise;
+	return std::string("The white furnace above lost light at a single bounce: ") + SELF_INTERSECTION +
+	       ". Fix that first: it darkens and adds noise to every furnace";
 }
 
 void require_finite(const Furnace_Render& render) {
@@ -56,7 +79,7 @@ void require_finite(const Furnace_Render& render) {
 
 // The render's noise against the reference's (one of the file's checks).
 bool check_noise(const Furnace_Render& render, const std::string& what) {
-	return check_noise(render, ALPHA, what, IF_NOISY);
+	return check_noise(render, ALPHA, what, lead(IF_NOISY));
 }
 
 } // namespace
@@ -81,6 +104,11 @@ TEST_CASE("Furnace: a white diffuse sphere in a uniform environment renders the 
 			                   "f |cos| / pdf is 1, handout §4.2)";
 			auto select = [&](uint32_t x, uint32_t y) { return coverage(x, y) == kind; };
 			means_ok = check_mean_rgb(render, glm::dvec3(1.0), Z, what, select, if_too_dark());
+			if (!means_ok && depth == 1 && kind == Pixel_Coverage::sphere && !bsdf_unit_tests_failed()) {
+				bool too_dark = true;
+				for (int c = 0; c < 3; c++) too_dark = too_dark && film_mean(render, c, select).mean < 1.0;
+				self_intersection_found = too_dark;
+			}
 			if (!means_ok) break;
 		}
 		bool noise_ok = check_noise(render, "max_depth " + std::to_string(depth));
@@ -157,7 +185,9 @@ TEST_CASE("Furnace: inside an emitting diffuse sphere, max_depth D gives Le * (1
 		bool mean_ok = check_mean_rgb(render, expected, Z,
 		                              "max_depth " + std::to_string(depth) + ": image mean, expected Le * sum_{k=0.." +
 		                                  std::to_string(depth) + "} rho^k (emission of every hit, attenuated by rho per "
-		                                  "bounce; max_depth counts bounces, handout §4.2)");
+		                                  "bounce" + (self_intersection_found ? "" : "; max_depth counts bounces, handout §4.2") +
+		                                  ")",
+		                              every_pixel, lead(""));
 		bool noise_ok = check_noise(render, "max_depth " + std::to_string(depth));
 		if (!mean_ok || !noise_ok) return;
 	}
@@ -192,7 +222,7 @@ TEST_CASE("Furnace: a scene without emitters or environment renders exactly 0", 
 	}
 }
 
-TEST_CASE("Furnace far from the origin: new rays must leave their surface at any scale (dist_bounds offset)", "[id:t4.furnace.far-from-origin][estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
+TEST_CASE("Furnace far from the origin: new rays must leave their surface at any scale (spawn_ray)", "[id:t4.furnace.far-from-origin][estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
 	// The same diffuse sphere as above, moved to 10^4 from the origin. Float coordinates there are
 	// 10^-3 apart, so a hit point may lie that far inside the sphere: a new ray whose dist_bounds
 	// start at a fixed small distance (1e-4, say) hits its own surface again, an extra "bounce"

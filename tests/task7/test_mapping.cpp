@@ -9,6 +9,13 @@ namespace {
 // Angular tolerance of float trigonometry, in uv units (1e-5 of a turn is 0.0036 degrees).
 constexpr float UV_TOLERANCE = 1e-5f;
 
+// The direction of film coordinates uv (handout §7.1: phi = 2 pi u, theta = pi v, +y up), in double
+// for the float uv: the exact answer, never the reference's float one.
+glm::dvec3 exact_direction(Vec2 uv) {
+	double phi = 2.0 * M_PI * double(uv.x), theta = M_PI * double(uv.y);
+	return {std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)};
+}
+
 // Distance between two u values on the circle (u = 0 and u = 1 are the same meridian).
 float u_distance(float a, float b) {
 	float d = std::abs(a - b);
@@ -90,7 +97,7 @@ TEST_CASE("uv_to_direction and direction_to_uv are each other's inverse", "[id:t
 	for (int n = 0; n < 10000; n++) {
 		// Away from the poles, where u is undefined.
 		uvs.push_back(Vec2{rng.unit(), 0.01f + 0.98f * rng.unit()});
-		expected_dirs.push_back(uv_to_direction(uvs.back()));
+		expected_dirs.push_back(Vec3(exact_direction(uvs.back())));
 	}
 	std::vector<Vec3> dirs = student_directions(uvs);
 	std::vector<Vec2> backs = student_uvs(expected_dirs);

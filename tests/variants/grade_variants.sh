@@ -4,7 +4,9 @@
 #   grade_variants.sh JUDGE FIRST COUNT SUBJECT...
 # Seeds FIRST ... FIRST + COUNT - 1 are the outer loop and the variants the inner one, so that what a
 # judge computes once per grading seed (a graded scene and its reference, drawn from the seed) is
-# computed for the first variant and reused by the others.
+# computed for a seed's first variant and reused by the others. A judge run waits for its sandboxed
+# subjects most of the time (a few tenths of its wall time is CPU), so JOBS runs (default 3) go at
+# once, in that order.
 #
 # The verdict. A grader's false-fail rate is at most ALPHA = 0.01 per run (README, "How a grade is
 # decided"; tools/false-fail-rate), so a correct variant fails Binomial(COUNT, <= ALPHA) of the seeds.
@@ -27,27 +29,30 @@ allowed=$(awk -v n="$count" -v p="$ALPHA" -v level="$LEVEL" 'BEGIN {
 
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
+# One run: its failures in $scratch/<variant>.<seed>.cases ("NAME<TAB>SEED" lines) and its output's
+# first lines in $scratch/<variant>.<seed>.first.
+grade_one() {
+	local judge=$1 seed=$2 subject=$3 scratch=$4 variant output names
+	variant=$(basename "$subject")
+	output=$("$judge" --subject "$subject" --seed "$seed" 2>&1) && return 0
+	# The judge's summary lists each failed test case as "  x NAME".
+	names=$(grep -E '^  x ' <<<"$output" | sed 's/^  x //' || true)
+	[ -n "$names" ] || names="(no summary: the judge did not finish)"
+	while IFS= read -r name; do printf '%s\t%s\n' "$name" "$seed"; done <<<"$names" >"$scratch/$variant.$seed.cases"
+	head -60 <<<"$output" >"$scratch/$variant.$seed.first"
+}
+export -f grade_one
 start=$SECONDS
 for ((seed = first; seed < first + count; seed++)); do
-	for subject in "${subjects[@]}"; do
-		variant=$(basename "$subject")
-		output=$("$judge" --subject "$subject" --seed "$seed" 2>&1) && continue
-		echo "$seed" >>"$scratch/$variant.seeds"
-		# The judge's summary lists each failed test case as "  x NAME".
-		names=$(grep -E '^  x ' <<<"$output" | sed 's/^  x //' || true)
-		[ -n "$names" ] || names="(no summary: the judge did not finish)"
-		while IFS= read -r name; do echo "$name	$seed" >>"$scratch/$variant.cases"; done <<<"$names"
-		[ -f "$scratch/$variant.first" ] || head -60 <<<"$output" >"$scratch/$variant.first"
-	done
-done
+	for subject in "${subjects[@]}"; do printf '%s\0%s\0%s\0%s\0' "$judge" "$seed" "$subject" "$scratch"; done
+done | xargs -0 -n 4 -P "${JOBS:-3}" bash -c 'grade_one "$@"' grade_one
 
 status=0
 echo "$(basename "$judge"): ${#subjects[@]} correct variants, seeds $first ... $((first + count - 1)), $((SECONDS - start)) s;" \
 	"each may fail at most $allowed of $count seeds (alpha $ALPHA per run, level $LEVEL)"
 for subject in "${subjects[@]}"; do
 	variant=$(basename "$subject")
-	failed=0
-	[ -f "$scratch/$variant.seeds" ] && failed=$(wc -l <"$scratch/$variant.seeds")
+	failed=$(find "$scratch" -name "$variant.*.cases" | wc -l)
 	verdict=ok
 	if [ "$failed" -gt "$allowed" ]; then
 		verdict="FAILED: more failing seeds than alpha explains, a bug of the grader"
@@ -56,10 +61,12 @@ for subject in "${subjects[@]}"; do
 	echo "  $variant: $failed of $count seeds failed ($verdict)"
 	[ "$failed" -gt 0 ] || continue
 	# Per test case: how many seeds failed it, and which.
-	sort "$scratch/$variant.cases" | awk -F '\t' '{ n[$1]++; s[$1] = s[$1] " " $2 } END { for (c in n) printf "    %d x %s (seeds%s)\n", n[c], c, s[c] }'
+	cat "$scratch/$variant".*.cases | sort -t "$(printf '\t')" -k2n |
+		awk -F '\t' '{ n[$1]++; s[$1] = s[$1] " " $2 } END { for (c in n) printf "    %d x %s (seeds%s)\n", n[c], c, s[c] }'
 	if [ "$verdict" != ok ]; then
 		echo "    the first failing run said:"
-		sed 's/^/      | /' "$scratch/$variant.first"
+		first_run=$(ls "$scratch/$variant".*.first | sort -t . -k2n | head -1)
+		sed 's/^/      | /' "$first_run"
 	fi
 done
 exit $status
