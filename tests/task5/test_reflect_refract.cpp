@@ -89,7 +89,8 @@ TEST_CASE("refract obeys Snell's law from both sides: n_out sin(theta_out) = n_i
 			CHECK(std::abs(glm::length(in) - 1.0f) < 1e-5f);
 		}
 		{
-			INFO("in_dir must lie on the other side of the surface than out_dir (y changes sign)");
+			INFO("in_dir must lie on the other side of the surface than out_dir (y changes sign): refraction goes "
+			     "through the surface (handout §5.2)");
 			CHECK(in.y * out.y < 0.0f);
 		}
 		{
@@ -102,7 +103,7 @@ TEST_CASE("refract obeys Snell's law from both sides: n_out sin(theta_out) = n_i
 		}
 		{
 			INFO("in_dir must equal the Snell direction: its tangential part points opposite to out_dir's "
-			     "(the path goes through the surface), its y component is -sign(out.y) cos(theta_in)");
+			     "(the path goes through the surface), its y component is -sign(out.y) cos(theta_in) (handout §5.2)");
 			CHECK(glm::length(glm::dvec3(in) - *expected) < 1e-5);
 		}
 		checked++;

@@ -139,14 +139,20 @@ TEST_CASE("direction_to_uv: u stays in [0, 1) and v in [0, 1], also just below p
 	for (int n = 0; n < 10000; n++) dirs.push_back(uv_to_direction(rng.unit2()));
 	std::vector<Vec2> uvs = student_uvs(dirs);
 	int bad = 0;
-	std::string first;
+	std::string first, hint;
 	for (size_t n = 0; n < dirs.size(); n++) {
 		Vec2 uv = uvs[n];
 		if (!(uv.x >= 0.0f && uv.x < 1.0f && uv.y >= 0.0f && uv.y <= 1.0f)) {
-			if (bad++ == 0) first = "direction_to_uv" + str(dirs[n]) + " = " + str(uv);
+			if (bad++ > 0) continue;
+			first = "direction_to_uv" + str(dirs[n]) + " = " + str(uv);
+			// What the first bad u says: atan2 gives phi in [-pi, pi], so an unshifted phi makes u
+			// negative; a shifted tiny negative phi rounds to 2 pi, u = 1.
+			hint = uv.x < 0.0f  ? "u is negative: atan2(z, x) is in [-pi, pi], add 2 pi to a negative phi"
+			       : uv.x >= 1.0f ? "wrap u = 1 back to 0 (a tiny negative phi plus 2 pi rounds to 2 pi)"
+			                      : "v = theta / pi must lie in [0, 1]";
 		}
 	}
-	INFO("uv must lie in [0, 1) x [0, 1] (env_light.h): wrap u = 1 back to 0 (handout §7.1); " << bad
-	                                                                                           << " failures, first: " << first);
+	INFO("uv must lie in [0, 1) x [0, 1] (env_light.h): " << hint << " (handout §7.1); " << bad
+	                                                       << " failures, first: " << first);
 	CHECK(bad == 0);
 }
