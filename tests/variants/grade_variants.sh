@@ -2,11 +2,10 @@
 # Grades the correct variants of one task (tests/variants/) under grading seeds: every variant must
 # pass, failing no more seeds than the grader's stated false-fail rate explains.
 #   grade_variants.sh JUDGE FIRST COUNT SUBJECT...
-# Seeds FIRST ... FIRST + COUNT - 1 are the outer loop and the variants the inner one, so that what a
-# judge computes once per grading seed (a graded scene and its reference, drawn from the seed) is
-# computed for a seed's first variant and reused by the others. A judge run waits for its sandboxed
-# subjects most of the time (a few tenths of its wall time is CPU), so JOBS runs (default 3) go at
-# once, in that order.
+# Seeds FIRST ... FIRST + COUNT - 1 are the outer loop and the variants the inner one, so that
+# whatever the judges keep per grading seed (a graded scene's reference rendered under the seed) is
+# made for a seed's first variant, which runs alone, and found by the others. A judge run waits for
+# its sandboxed subjects much of the time, so up to JOBS runs (default 3) go at once.
 #
 # The verdict. A grader's false-fail rate is at most ALPHA = 0.01 per run (README, "How a grade is
 # decided"; tools/false-fail-rate), so a correct variant fails Binomial(COUNT, <= ALPHA) of the seeds.
@@ -41,11 +40,21 @@ grade_one() {
 	while IFS= read -r name; do printf '%s\t%s\n' "$name" "$seed"; done <<<"$names" >"$scratch/$variant.$seed.cases"
 	head -60 <<<"$output" >"$scratch/$variant.$seed.first"
 }
-export -f grade_one
 start=$SECONDS
+jobs=${JOBS:-3}
 for ((seed = first; seed < first + count; seed++)); do
-	for subject in "${subjects[@]}"; do printf '%s\0%s\0%s\0%s\0' "$judge" "$seed" "$subject" "$scratch"; done
-done | xargs -0 -n 4 -P "${JOBS:-3}" bash -c 'grade_one "$@"' grade_one
+	# A seed's first variant alone (it makes what the judges keep per seed), then the others, at most
+	# $jobs runs at a time, while the next seed's first variant starts.
+	for ((i = 0; i < ${#subjects[@]}; i++)); do
+		while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n; done
+		if [ "$i" -eq 0 ]; then
+			grade_one "$judge" "$seed" "${subjects[i]}" "$scratch"
+		else
+			grade_one "$judge" "$seed" "${subjects[i]}" "$scratch" &
+		fi
+	done
+done
+wait
 
 status=0
 echo "$(basename "$judge"): ${#subjects[@]} correct variants, seeds $first ... $((first + count - 1)), $((SECONDS - start)) s;" \
