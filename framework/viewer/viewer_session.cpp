@@ -1,4 +1,5 @@
 #include "viewer_session.h"
+#include "block_compare.h"
 #include "diagnostics.h"
 #include "image_io.h"
 
@@ -131,14 +132,14 @@ bool Viewer_Session::student_samples_lights_now() const {
 	// a path samples the lights with probability 1/2, so 3 x 32 paths all miss it with probability
 	// 2^-96 where a diffuse surface is seen. A renderer that cannot follow (it crashes) keeps the
 	// finished estimator.
-	std::string scene_now;
+	std::string scene_now, seed_now;
 	{
 		std::lock_guard<std::mutex> lock(mutex);
-		scene_now = scene;
+		scene_now = scene, seed_now = std::to_string(seed);
 	}
 	for (const char* pixel : {"16,16", "8,24", "24,24"}) {
 		std::vector<std::string> args{config.student_renderer, scene_now, "--width", "32", "--height", "32",
-		                              "--view", "path", "--seed", std::to_string(seed), "--follow-pixel", pixel,
+		                              "--view", "path", "--seed", seed_now, "--follow-pixel", pixel,
 		                              "--follow-format", "json", "--follow-samples", "32"};
 		std::string out, err;
 		if (run_program(args, out, err) != 0) return true;
@@ -253,10 +254,12 @@ void Viewer_Session::compare_latest() {
 	// The graders' z-tests (image_compare.h) for two estimates of few samples each, which a stored
 	// reference's calibration does not fit: each pixel's larger variance, at most 0.25 % beyond z_c.
 	Image_Comparison c = compare_estimators(s.estimate, r.estimate);
+	// And the means over blocks of pixels, which heavy tails cannot hide (block_compare.h).
+	Block_Comparison blocks = compare_blocks(s.estimate, r.estimate);
 	result->colours = z_colours_of(estimator_z_scores(s.estimate, r.estimate), c.z_critical);
 	result->summary = {{"student_samples", s.samples},
 	                   {"reference_samples", r.samples},
-	                   {"pass", c.pass},
+	                   {"pass", c.pass && blocks.pass},
 	                   {"failed", c.failed},
 	                   {"tests", c.tests},
 	                   {"allowed", c.allowed_outliers},
@@ -267,7 +270,7 @@ void Viewer_Session::compare_latest() {
 	                                                            "and light sampling, as yours"
 	                                                          : "task 4's path tracer sampling the BSDF only, as "
 	                                                            "yours does until task 6 samples the lights"},
-	                   {"message", c.message + "; " + noise_ratio(s.estimate, r.estimate)}};
+	                   {"message", c.message + "; " + blocks.message + "; " + noise_ratio(s.estimate, r.estimate)}};
 	{
 		std::lock_guard<std::mutex> lock(mutex);
 		if (student.frame != result->student || reference.frame != result->reference) return; // outdated

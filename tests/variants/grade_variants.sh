@@ -35,7 +35,7 @@ grade_one() {
 	variant=$(basename "$subject")
 	output=$("$judge" --subject "$subject" --seed "$seed" 2>&1) && return 0
 	# The judge's summary lists each failed test case as "  x NAME".
-	names=$(grep -E '^  x ' <<<"$output" | sed 's/^  x //' || true)
+	names=$(grep -E '^  x ' <<<"$output" | grep -v '^  x := ' | sed 's/^  x //' || true)
 	[ -n "$names" ] || names="(no summary: the judge did not finish)"
 	while IFS= read -r name; do printf '%s\t%s\n' "$name" "$seed"; done <<<"$names" >"$scratch/$variant.$seed.cases"
 	head -60 <<<"$output" >"$scratch/$variant.$seed.first"
