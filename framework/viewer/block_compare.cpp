@@ -11,7 +11,7 @@ Block_Comparison compare_blocks(const Image_Estimate& student, const Image_Estim
 	uint32_t w = student.mean.w, h = student.mean.h;
 	uint32_t blocks_x = (w + block - 1) / block, blocks_y = (h + block - 1) / block;
 	c.tests = size_t(blocks_x) * blocks_y * 3;
-	c.z_critical = two_sided_z(sidak(alpha, c.tests));
+	c.z_critical = stats::two_sided_z(stats::sidak(alpha, c.tests));
 	for (uint32_t by = 0; by < blocks_y; by++) {
 		for (uint32_t bx = 0; bx < blocks_x; bx++) {
 			uint32_t x0 = bx * block, y0 = by * block, x1 = std::min(w, x0 + block) - 1, y1 = std::min(h, y0 + block) - 1;
