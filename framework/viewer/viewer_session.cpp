@@ -257,6 +257,7 @@ void Viewer_Session::compare_latest() {
 	// And the means over blocks of pixels, which heavy tails cannot hide (block_compare.h).
 	Block_Comparison blocks = compare_blocks(s.estimate, r.estimate);
 	result->colours = z_colours_of(estimator_z_scores(s.estimate, r.estimate), c.z_critical);
+	mark_failing_blocks(blocks, s.width(), s.height(), result->colours);
 	result->summary = {{"student_samples", s.samples},
 	                   {"reference_samples", r.samples},
 	                   {"pass", c.pass && blocks.pass},
