@@ -67,7 +67,10 @@ void Viewer_Session::rebuild_student() {
 	                                    {"diagnostics", diagnostics},
 	                                    {"log", last_lines(log, 60)}}
 	                         .dump());
-	if (status == 0 && !stopping) start_side(Side::student);
+	if (status == 0 && !stopping) {
+		start_side(Side::student);
+		match_reference_estimator(); // the edit may have finished (or undone) task 6's light sampling
+	}
 }
 
 void Viewer_Session::watch_student_files() {

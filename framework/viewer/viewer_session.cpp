@@ -1,4 +1,5 @@
 #include "viewer_session.h"
+#include "block_compare.h"
 #include "diagnostics.h"
 #include "image_io.h"
 
@@ -99,6 +100,7 @@ void Viewer_Session::start() {
 	comparer = std::thread([this] { compare_when_asked(); });
 	if (config.rebuild_command.empty()) {
 		start_side(Side::student);
+		builder = std::thread([this] { match_reference_estimator(); });
 	} else {
 		builder = std::thread([this] { rebuild_student(); });
 	}
@@ -113,7 +115,49 @@ std::vector<std::string> Viewer_Session::renderer_arguments(Side s) const {
 	                              scene, "--spp", std::to_string(config.max_samples), "--view", view,
 	                              "--seed", std::to_string(side_seed)};
 	if (config.threads) args.insert(args.end(), {"--threads", std::to_string(config.threads)});
+	// Like with like: beside the student's render the reference renders the same estimator, never
+	// another with other noise (its default, next-event estimation, has far lighter tails than task
+	// 4's path tracer, whose pixels at a few hundred samples have rarely met a small light yet: the
+	// z-test would blame correct code). The student's renderer runs task 4's path tracer with task
+	// 6's sample_incoming, which samples the lights only once task 6 is done.
+	if (s == Side::reference && config.compare) {
+		args.insert(args.end(), {"--integrator", "mixture"});
+		if (!student_samples_lights) args.push_back("--no-light-sampling");
+	}
 	return args;
+}
+
+bool Viewer_Session::student_samples_lights_now() const {
+	// A few paths of three pixels of a small film: with a finished task 6, the first diffuse hit of
+	// a path samples the lights with probability 1/2, so 3 x 32 paths all miss it with probability
+	// 2^-96 where a diffuse surface is seen. A renderer that cannot follow (it crashes) keeps the
+	// finished estimator.
+	std::string scene_now, seed_now;
+	{
+		std::lock_guard<std::mutex> lock(mutex);
+		scene_now = scene, seed_now = std::to_string(seed);
+	}
+	for (const char* pixel : {"16,16", "8,24", "24,24"}) {
+		std::vector<std::string> args{config.student_renderer, scene_now, "--width", "32", "--height", "32",
+		                              "--view", "path", "--seed", seed_now, "--follow-pixel", pixel,
+		                              "--follow-format", "json", "--follow-samples", "32"};
+		std::string out, err;
+		if (run_program(args, out, err) != 0) return true;
+		if (out.find("\"light_sample\"") != std::string::npos) return true;
+	}
+	return false;
+}
+
+void Viewer_Session::match_reference_estimator() {
+	if (!config.compare) return;
+	bool samples_lights = student_samples_lights_now();
+	{
+		std::lock_guard<std::mutex> lock(mutex);
+		if (samples_lights == student_samples_lights || stopping) return;
+		student_samples_lights = samples_lights;
+	}
+	start_side(Side::reference); // the same seed and samples, now the student's estimator
+	publish_state();
 }
 
 void Viewer_Session::start_side(Side s) {
@@ -199,23 +243,35 @@ void Viewer_Session::compare_latest() {
 		if (!result->student || !result->reference) return;
 		if (comparison && comparison->student == result->student && comparison->reference == result->reference) return;
 	}
+	bool samples_lights;
+	{
+		std::lock_guard<std::mutex> lock(mutex);
+		samples_lights = student_samples_lights;
+	}
 	const Film_Frame& s = *result->student;
 	const Film_Frame& r = *result->reference;
 	if (s.width() != r.width() || s.height() != r.height()) return;
 	// The graders' z-tests (image_compare.h) for two estimates of few samples each, which a stored
 	// reference's calibration does not fit: each pixel's larger variance, at most 0.25 % beyond z_c.
 	Image_Comparison c = compare_estimators(s.estimate, r.estimate);
+	// And the means over blocks of pixels, which heavy tails cannot hide (block_compare.h).
+	Block_Comparison blocks = compare_blocks(s.estimate, r.estimate);
 	result->colours = z_colours_of(estimator_z_scores(s.estimate, r.estimate), c.z_critical);
+	mark_failing_blocks(blocks, s.width(), s.height(), result->colours);
 	result->summary = {{"student_samples", s.samples},
 	                   {"reference_samples", r.samples},
-	                   {"pass", c.pass},
+	                   {"pass", c.pass && blocks.pass},
 	                   {"failed", c.failed},
 	                   {"tests", c.tests},
 	                   {"allowed", c.allowed_outliers},
 	                   {"z_critical", c.z_critical},
 	                   {"rel_mse", c.rel_mse},
 	                   {"worst", {{"x", c.worst_x}, {"y", c.worst_y}, {"z", c.worst_z}}},
-	                   {"message", c.message + "; " + noise_ratio(s.estimate, r.estimate)}};
+	                   {"reference_estimator", samples_lights ? "task 4's path tracer with task 6's mixture of BSDF "
+	                                                            "and light sampling, as yours"
+	                                                          : "task 4's path tracer sampling the BSDF only, as "
+	                                                            "yours does until task 6 samples the lights"},
+	                   {"message", c.message + "; " + blocks.message + "; " + noise_ratio(s.estimate, r.estimate)}};
 	{
 		std::lock_guard<std::mutex> lock(mutex);
 		if (student.frame != result->student || reference.frame != result->reference) return; // outdated
@@ -246,6 +302,8 @@ void Viewer_Session::restart(const Restart& changes) {
 	auto old_reference = stop_side(Side::reference);
 	old_student.reset();
 	old_reference.reset();
+	// Whether the student's code samples the lights shows only in a scene that has some.
+	bool probe = changes.scene && config.compare;
 	bool student_buildable;
 	{
 		std::lock_guard<std::mutex> lock(mutex);
@@ -255,6 +313,11 @@ void Viewer_Session::restart(const Restart& changes) {
 		paused = false;
 		student_buildable = build_state != "failed" && build_state != "building";
 		comparison.reset();
+	}
+	if (probe && student_buildable) {
+		bool samples_lights = student_samples_lights_now();
+		std::lock_guard<std::mutex> lock(mutex);
+		student_samples_lights = samples_lights;
 	}
 	publish_state();
 	start_side(Side::reference);

@@ -113,6 +113,11 @@ private:
 	};
 
 	std::vector<std::string> renderer_arguments(Side side) const;
+	// Like with like: whether the student's renderer samples the lights (its task 6's
+	// sample_incoming calls sample_area_lights), found by following a few of its paths; the
+	// reference then renders the same estimator (match_reference_estimator).
+	bool student_samples_lights_now() const;
+	void match_reference_estimator();
 	void start_side(Side side);
 	std::unique_ptr<Render_Process> stop_side(Side side); // to destroy outside the lock
 	void on_frame(Side side, uint64_t generation, std::shared_ptr<const Film_Frame> frame);
@@ -139,6 +144,10 @@ private:
 	std::string view = "path";
 	uint64_t seed;
 	bool paused = false;
+	// The estimator the reference renders beside the student's (renderer_arguments): task 4's path
+	// tracer, as the student's renderer is, with light sampling only if the student's task 6 samples
+	// the lights. Until the first probe, as a finished task 6 does.
+	bool student_samples_lights = true;
 	Render_Side student, reference;
 	std::shared_ptr<const Comparison> comparison;
 	std::string build_state = "none"; // none, building, failed, ok

@@ -1,5 +1,6 @@
 # Mutants as edits (tests/mutants/README.md): lab_mutant_source writes a mutant's source from its
-# .mutant file and the task file it edits. Used at configure time by tests/mutants/CMakeLists.txt,
+# .mutant file and the task file it edits; a correct variant's (tests/variants/, header 'variant:'
+# instead of 'mutant:') from its .variant file the same way. Used at configure time by tests/mutants/CMakeLists.txt,
 # and by tests/mutants/apply_mutant.cmake in script mode.
 #
 # Every text is handled as one whole string (string(FIND), string(SUBSTRING), quoted arguments),
@@ -34,10 +35,13 @@ function(lab_mutant_source mutant base output)
 			"tests/mutants/README.md)")
 	endif()
 	string(SUBSTRING "${text}" 0 ${header_end} header)
-	if(NOT header MATCHES "(^|\n)mutant: ([^\n]+)")
-		message(FATAL_ERROR "${mutant}: the header has no line 'mutant: <the mistake>'")
+	# A mutant names its mistake; a correct variant (tests/variants/) what it does differently.
+	if(NOT header MATCHES "(^|\n)(mutant|variant): ([^\n]+)")
+		message(FATAL_ERROR "${mutant}: the header has no line 'mutant: <the mistake>' (or, for a correct "
+			"variant, 'variant: <what it does differently>')")
 	endif()
-	set(description "${CMAKE_MATCH_2}")
+	set(kind "${CMAKE_MATCH_2}")
+	set(description "${CMAKE_MATCH_3}")
 	if(NOT header MATCHES "(^|\n)why: [^\n]+")
 		message(FATAL_ERROR "${mutant}: the header has no line 'why: <why a student would make it>'")
 	endif()
@@ -112,7 +116,10 @@ function(lab_mutant_source mutant base output)
 		set(source "${prefix}${replace}${suffix}")
 	endwhile()
 
-	set(generated "// Mutant: ${description}\n")
+	string(SUBSTRING "${kind}" 0 1 initial)
+	string(TOUPPER "${initial}" initial)
+	string(SUBSTRING "${kind}" 1 -1 rest_of_kind)
+	set(generated "// ${initial}${rest_of_kind}: ${description}\n")
 	string(APPEND generated "// Generated from ${mutant} and ${base}: edit those, not this file.\n")
 	string(APPEND generated "${source}")
 	if(EXISTS "${output}")

@@ -40,15 +40,38 @@ const char* const IF_NOISY =
 	"Look for weights that can grow without bound: a division by a small pdf or cosine (the weight is f |cos| / pdf, "
 	"handout §4.2), and for a Russian roulette that cuts paths more often than the albedo says (handout §4.3)";
 
+// What a self-intersection does (handout §4.2, spawn_ray.h): a new ray that starts at hit.position,
+// which rounding puts on either side of the surface, hits the surface it leaves, and the path loses
+// the light it would have found.
+const char* const SELF_INTERSECTION =
+	"a new ray that starts at hit.position hits the surface it leaves (self-intersection: rounding puts the hit point "
+	"on either side of the surface), and the path loses its light there. Start every new ray with spawn_ray(hit, "
+	"direction, ray.depth + 1) (spawn_ray.h), which moves its origin off the surface (handout §4.2)";
+
+// Set when the white furnace at max_depth 1 came out too dark while the BSDF's own test cases pass:
+// a path that bounces once off a convex sphere under the sky can then only lose light at that bounce,
+// by a self-intersection. Later furnaces then lead with it, not with the leads a self-intersection
+// also sets off there (max_depth's off-by-one, a division by a small pdf).
+bool self_intersection_found = false;
+
+bool bsdf_unit_tests_failed() {
+	for (const char* bsdf : {"Lambertian::scatter", "Lambertian::evaluate", "Lambertian::pdf"}) {
+		if (judge::unit_tests_failed(bsdf)) return true;
+	}
+	return false;
+}
 
 // Said of a furnace that is too dark while the BSDF's own test cases pass: the usual cause then.
 std::string if_too_dark() {
-	for (const char* bsdf : {"Lambertian::scatter", "Lambertian::evaluate", "Lambertian::pdf"}) {
-		if (judge::unit_tests_failed(bsdf)) return ""; // the note above names the BSDF
-	}
-	return "Too dark: a ray that starts exactly on the surface it leaves hits that surface again (self-intersection) "
-	       "and the path loses its light there. The next ray's dist_bounds.x must be above 0 and grow with "
-	       "|hit.position| (handout §4.2)";
+	if (bsdf_unit_tests_failed()) return ""; // the note above names the BSDF
+	return std::string("Too dark: ") + SELF_INTERSECTION;
+}
+
+// The lead for a furnace that fails after a self-intersection was found: fix that first.
+std::string lead(const std::string& otherwise) {
+	if (!self_intersection_found) return otherwise;
+	return std::string("The white furnace above lost light at a single bounce: ") + SELF_INTERSECTION +
+	       ". Fix that first: it darkens and adds noise to every furnace";
 }
 
 void require_finite(const Furnace_Render& render) {
@@ -57,9 +80,11 @@ void require_finite(const Furnace_Render& render) {
 	REQUIRE(render.film.non_finite() == 0);
 }
 
-// The render's noise against the reference's (one of the file's checks).
-bool check_noise(const Furnace_Render& render, const std::string& what) {
-	return check_noise(render, ALPHA, what, IF_NOISY);
+// The render's noise against the reference's (one of the file's checks). After a wrong mean the
+// noise of a render of something else says nothing of its own: no lead then.
+bool check_noise(const Furnace_Render& render, const std::string& what, bool means_ok = true) {
+	return check_noise(render, ALPHA, what,
+	                   means_ok ? lead(IF_NOISY) : "Its mean is wrong too (above): fix that first, the noise follows");
 }
 
 // The probe of a furnace test case (furnace_scenes.h, with_probe_sphere): the furnace with a second
@@ -96,10 +121,22 @@ TEST_CASE("Furnace: a white diffuse sphere in a uniform environment renders the 
 			                   " (albedo 1 under L = 1 neither gains nor loses light: each bounce's weight "
 			                   "f |cos| / pdf is 1, handout §4.2)";
 			auto select = [&](uint32_t x, uint32_t y) { return coverage(x, y) == kind; };
+			bool too_bright = true;
+			for (int c = 0; c < 3; c++) too_bright = too_bright && film_mean(render, c, select).mean > 1.0;
+			if (too_bright && kind == Pixel_Coverage::sphere && !bsdf_unit_tests_failed()) {
+				what += ". Too bright: shade weighs a sample by f |cos theta_in| / pdf, theta_in the angle between the "
+				        "sample's NEW direction and the normal (not the arriving ray's); for this white sphere that "
+				        "weight is exactly 1 (handout §4.2)";
+			}
 			means_ok = check_mean_rgb(render, glm::dvec3(1.0), Z, what, select, if_too_dark());
+			if (!means_ok && depth == 1 && kind == Pixel_Coverage::sphere && !bsdf_unit_tests_failed()) {
+				bool too_dark = true;
+				for (int c = 0; c < 3; c++) too_dark = too_dark && film_mean(render, c, select).mean < 1.0;
+				self_intersection_found = too_dark;
+			}
 			if (!means_ok) break;
 		}
-		bool noise_ok = check_noise(render, "max_depth " + std::to_string(depth));
+		bool noise_ok = check_noise(render, "max_depth " + std::to_string(depth), means_ok);
 		if (!means_ok || !noise_ok) return;
 	}
 	check_probe(scene, size, secret);
@@ -130,13 +167,14 @@ TEST_CASE("Furnace: a diffuse sphere of albedo rho under a uniform sky L renders
 		require_finite(render);
 		std::string prefix = "max_depth " + std::to_string(depth) + ", mean of the ";
 		glm::dvec3 expected = depth == 0 ? glm::dvec3(0.0) : glm::dvec3(rho) * glm::dvec3(sky);
-		std::string why = depth == 0 ? " (max_depth 0: the camera ray's hit may not scatter, so a "
-		                               "non-emitting surface is black)"
+		std::string why = depth == 0 ? " (max_depth 0: the camera ray's hit may not scatter, so a non-emitting "
+		                               "surface is black: shade returns the emission alone once ray.depth >= "
+		                               "settings.max_depth, handout §4.2)"
 		                             : " (rho * L: one bounce reaches the sky)";
 		bool sphere_ok = check_mean_rgb(render, expected, Z, prefix + to_string(Pixel_Coverage::sphere) + why,
 		                                on_sphere, if_too_dark());
 		bool sky_ok = check_mean_rgb(render, glm::dvec3(sky), Z, prefix + to_string(Pixel_Coverage::background), on_sky);
-		bool noise_ok = check_noise(render, "max_depth " + std::to_string(depth));
+		bool noise_ok = check_noise(render, "max_depth " + std::to_string(depth), sphere_ok && sky_ok);
 		if (!sphere_ok || !sky_ok || !noise_ok) return;
 	}
 	check_probe(scene, size, secret);
@@ -172,11 +210,20 @@ TEST_CASE("Furnace: inside an emitting diffuse sphere, max_depth D gives Le * (1
 			for (uint32_t k = 0; k <= depth; k++, power *= rho[c]) sum += power;
 			expected[c] = le[c] * sum;
 		}
+		// Which lead fits: max_depth 0 and 1 right (a failure ends the loop, so a deeper depth means they
+		// passed) but a deeper one wrong is how a Russian roulette that does not divide by q shows
+		// (handout §4.3); otherwise the depth test or the emission (§4.2).
+		std::string count_lead = depth >= 2 ? "; max_depth 0 and 1 came out right: if shade plays Russian roulette, a "
+		                                      "path that continues with probability q must be divided by q (handout "
+		                                      "§4.3), else check that max_depth counts bounces (handout §4.2)"
+		                                    : "; max_depth counts bounces, handout §4.2";
 		bool mean_ok = check_mean_rgb(render, expected, Z,
 		                              "max_depth " + std::to_string(depth) + ": image mean, expected Le * sum_{k=0.." +
-		                                  std::to_string(depth) + "} rho^k (emission of every hit, attenuated by rho per "
-		                                  "bounce; max_depth counts bounces, handout §4.2)");
-		bool noise_ok = check_noise(render, "max_depth " + std::to_string(depth));
+		                                  std::to_string(depth) + "} rho^k (shade adds the emission material.emitted of "
+		                                  "every hit, attenuated by rho per bounce" +
+		                                  (self_intersection_found ? "" : count_lead) + ")",
+		                              every_pixel, lead(""));
+		bool noise_ok = check_noise(render, "max_depth " + std::to_string(depth), mean_ok);
 		if (!mean_ok || !noise_ok) return;
 	}
 	check_probe(scene, 24, secret);
@@ -217,7 +264,7 @@ TEST_CASE("Furnace: a scene without emitters or environment renders exactly 0", 
 	check_probe(sphere_seen_from_outside(diffuse_material(albedo), lit, view.distance, view.v_fov), 16, secret);
 }
 
-TEST_CASE("Furnace far from the origin: new rays must leave their surface at any scale (dist_bounds offset)", "[id:t4.furnace.far-from-origin][estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
+TEST_CASE("Furnace far from the origin: new rays must leave their surface at any scale (spawn_ray)", "[id:t4.furnace.far-from-origin][estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
 	// The same diffuse sphere as above, moved to 10^4 from the origin. Float coordinates there are
 	// 10^-3 apart, so a hit point may lie that far inside the sphere: a new ray whose dist_bounds
 	// start at a fixed small distance (1e-4, say) hits its own surface again, an extra "bounce"
@@ -251,6 +298,6 @@ TEST_CASE("Furnace far from the origin: new rays must leave their surface at any
 	                              "sphere centred at " + centre + ", mean of the " +
 	                                  std::string(to_string(Pixel_Coverage::sphere)) + " (expected rho * L_env)",
 	                              on_sphere, if_too_dark());
-	bool noise_ok = check_noise(render, "sphere centred at " + centre);
+	bool noise_ok = check_noise(render, "sphere centred at " + centre, mean_ok);
 	if (mean_ok && noise_ok) check_probe(scene, size, secret);
 }

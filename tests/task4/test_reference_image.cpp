@@ -17,7 +17,7 @@ TEST_CASE("the graded scene cornell_diffuse renders like its reference image",
 		{"Lambertian::pdf", "the density |cos theta| / pi the estimator divides by (handout §4.1)."},
 		{"Lambertian::scatter", "the cosine-weighted directions (handout §4.1)."},
 		{"shade", "the estimator: emission plus f |cos| / pdf times the next ray's radiance, and where the next ray "
-		          "starts (dist_bounds, handout §4.2)."}};
+		          "starts (spawn_ray, handout §4.2)."}};
 	test.if_noisy = "Look for weights that can grow without bound: a division by a small pdf or cosine (the weight is "
 	                "f |cos| / pdf, handout §4.2), and for a Russian roulette that cuts more often than the albedo "
 	                "says (handout §4.3).";

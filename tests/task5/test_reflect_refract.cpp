@@ -1,6 +1,7 @@
 // Task 5, handout §5.1-§5.2: reflect and refract in the local frame (normal +y; out_dir and the
 // returned in_dir both point away from the surface). The student's functions run in the subject
-// (grading/judge/protocol.h); expected directions are the reference's, and the checks restate the
+// (grading/judge/protocol.h); expected directions are exact (reflection's is exact in float, Snell's
+// is computed in double for the float input, task5::exact_refraction), and the checks restate the
 // law of reflection and Snell's law. With a grading seed the directions and (where the test's name
 // does not fix it) the index of refraction are drawn from it.
 #include "directions.h"
@@ -25,12 +26,6 @@ using Refraction = protocol::Refract::Result;
 
 std::vector<Refraction> student_refract(const std::vector<protocol::Refract::Query>& queries) {
 	return judge::ask(protocol::Refract{queries});
-}
-
-Refraction reference_refract(Vec3 out, float ior) {
-	Refraction r;
-	r.in_dir = refract(out, ior, r.was_internal);
-	return r;
 }
 
 } // namespace
@@ -76,13 +71,15 @@ TEST_CASE("refract obeys Snell's law from both sides: n_out sin(theta_out) = n_i
 		Vec3 out = queries[n].out_dir, in = answers[n].in_dir;
 		bool inside = out.y < 0.0f, internal = answers[n].was_internal;
 		double theta = thetas[n];
-		Refraction expected = reference_refract(out, ior);
+		// The exact Snell direction for the float input, in double (directions.h).
+		std::optional<glm::dvec3> expected = task5::exact_refraction(out, ior);
 		{
-			INFO("grader self-check: the reference refracts " << str(out));
-			REQUIRE_FALSE(expected.was_internal);
+			INFO("grader self-check: " << str(out) << " refracts");
+			REQUIRE(expected);
 		}
+		Vec3 shown(*expected);
 		INFO("refract" << str(out) << " (from " << (inside ? "inside" : "outside") << ", theta = " << theta
-		     << " degrees, index " << ior << ") returned " << str(in) << ", expected " << str(expected.in_dir));
+		     << " degrees, index " << ior << ") returned " << str(in) << ", expected " << str(shown));
 		{
 			INFO("was_internal must be false: below the critical angle light refracts (handout §5.2)");
 			CHECK_FALSE(internal);
@@ -92,7 +89,8 @@ TEST_CASE("refract obeys Snell's law from both sides: n_out sin(theta_out) = n_i
 			CHECK(std::abs(glm::length(in) - 1.0f) < 1e-5f);
 		}
 		{
-			INFO("in_dir must lie on the other side of the surface than out_dir (y changes sign)");
+			INFO("in_dir must lie on the other side of the surface than out_dir (y changes sign): refraction goes "
+			     "through the surface (handout §5.2)");
 			CHECK(in.y * out.y < 0.0f);
 		}
 		{
@@ -105,8 +103,8 @@ TEST_CASE("refract obeys Snell's law from both sides: n_out sin(theta_out) = n_i
 		}
 		{
 			INFO("in_dir must equal the Snell direction: its tangential part points opposite to out_dir's "
-			     "(the path goes through the surface), its y component is -sign(out.y) cos(theta_in)");
-			CHECK(glm::length(glm::dvec3(in) - glm::dvec3(expected.in_dir)) < 1e-5);
+			     "(the path goes through the surface), its y component is -sign(out.y) cos(theta_in) (handout §5.2)");
+			CHECK(glm::length(glm::dvec3(in) - *expected) < 1e-5);
 		}
 		checked++;
 	}
@@ -136,7 +134,7 @@ TEST_CASE("refract: beyond the critical angle 41.81 degrees inside glass, total 
 		        "was_internal must be true and the result reflect(out_dir) (handout §5.2); got "
 		     << str(in) << ", was_internal = " << internal);
 		CHECK(internal);
-		CHECK(glm::length(in - reference_refract(out, IOR).in_dir) < 1e-6f);
+		CHECK(glm::length(in - Vec3{-out.x, out.y, -out.z}) < 1e-6f); // reflect(out_dir), exactly
 	}
 	{
 		INFO("at 41.7 degrees inside, just below the critical angle, light refracts: was_internal must be false");

@@ -9,6 +9,13 @@ namespace {
 // Angular tolerance of float trigonometry, in uv units (1e-5 of a turn is 0.0036 degrees).
 constexpr float UV_TOLERANCE = 1e-5f;
 
+// The direction of film coordinates uv (handout §7.1: phi = 2 pi u, theta = pi v, +y up), in double
+// for the float uv: the exact answer, never the reference's float one.
+glm::dvec3 exact_direction(Vec2 uv) {
+	double phi = 2.0 * M_PI * double(uv.x), theta = M_PI * double(uv.y);
+	return {std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)};
+}
+
 // Distance between two u values on the circle (u = 0 and u = 1 are the same meridian).
 float u_distance(float a, float b) {
 	float d = std::abs(a - b);
@@ -90,7 +97,7 @@ TEST_CASE("uv_to_direction and direction_to_uv are each other's inverse", "[id:t
 	for (int n = 0; n < 10000; n++) {
 		// Away from the poles, where u is undefined.
 		uvs.push_back(Vec2{rng.unit(), 0.01f + 0.98f * rng.unit()});
-		expected_dirs.push_back(uv_to_direction(uvs.back()));
+		expected_dirs.push_back(Vec3(exact_direction(uvs.back())));
 	}
 	std::vector<Vec3> dirs = student_directions(uvs);
 	std::vector<Vec2> backs = student_uvs(expected_dirs);
@@ -132,14 +139,20 @@ TEST_CASE("direction_to_uv: u stays in [0, 1) and v in [0, 1], also just below p
 	for (int n = 0; n < 10000; n++) dirs.push_back(uv_to_direction(rng.unit2()));
 	std::vector<Vec2> uvs = student_uvs(dirs);
 	int bad = 0;
-	std::string first;
+	std::string first, hint;
 	for (size_t n = 0; n < dirs.size(); n++) {
 		Vec2 uv = uvs[n];
 		if (!(uv.x >= 0.0f && uv.x < 1.0f && uv.y >= 0.0f && uv.y <= 1.0f)) {
-			if (bad++ == 0) first = "direction_to_uv" + str(dirs[n]) + " = " + str(uv);
+			if (bad++ > 0) continue;
+			first = "direction_to_uv" + str(dirs[n]) + " = " + str(uv);
+			// What the first bad u says: atan2 gives phi in [-pi, pi], so an unshifted phi makes u
+			// negative; a shifted tiny negative phi rounds to 2 pi, u = 1.
+			hint = uv.x < 0.0f  ? "u is negative: atan2(z, x) is in [-pi, pi], add 2 pi to a negative phi"
+			       : uv.x >= 1.0f ? "wrap u = 1 back to 0 (a tiny negative phi plus 2 pi rounds to 2 pi)"
+			                      : "v = theta / pi must lie in [0, 1]";
 		}
 	}
-	INFO("uv must lie in [0, 1) x [0, 1] (env_light.h): wrap u = 1 back to 0 (handout §7.1); " << bad
-	                                                                                           << " failures, first: " << first);
+	INFO("uv must lie in [0, 1) x [0, 1] (env_light.h): " << hint << " (handout §7.1); " << bad
+	                                                       << " failures, first: " << first);
 	CHECK(bad == 0);
 }

@@ -173,7 +173,8 @@ function showComparison(c) {
 	const status = document.createElement("span");
 	status.className = c.pass ? "pass" : "fail";
 	status.textContent = c.pass ? "PASS" : "FAIL";
-	verdict.append(status, ` at ${c.student_samples} spp (reference ${c.reference_samples} spp): ${c.message}`);
+	verdict.append(status, ` at ${c.student_samples} spp (reference ${c.reference_samples} spp of ` +
+		`${c.reference_estimator}): ${c.message}`);
 	fetchZ();
 }
 

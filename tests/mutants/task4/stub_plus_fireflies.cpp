@@ -42,9 +42,8 @@ Spectrum Pathtracer::shade(RNG& rng, const Ray& ray, const Trace& hit) const {
 	//    space; task 6 extends it).
 	// 4. Weight the incoming light: attenuation * |cos| / pdf, or just attenuation when the sample
 	//    is discrete. A pdf of 0 means the direction adds nothing: never divide by it.
-	// 5. Trace the new ray with trace(): start it at hit.position with dist_bounds.x a small
-	//    distance that grows with the size of hit.position's coordinates, so it cannot hit the
-	//    surface it leaves at any scale, and give it depth ray.depth + 1.
+	// 5. Trace the new ray with trace(): spawn_ray(hit, direction, ray.depth + 1) (spawn_ray.h)
+	//    starts it just off the surface, so that it cannot hit the surface it leaves.
 	// 6. Optionally, Russian roulette (handout §4.3), only if settings.russian_roulette: stop with
 	//    some probability and divide by the probability of continuing, so the average stays the same.
 	//
