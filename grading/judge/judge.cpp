@@ -11,6 +11,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -113,10 +114,24 @@ std::optional<uint64_t> secret_seed() {
 	return state().secret_seed;
 }
 
-RNG case_generator(const std::string& what) {
-	uint64_t h = 1469598103934665603ull; // FNV-1a of `what`, a stream per test case
+namespace {
+// FNV-1a of `what`: a stream per test case.
+uint64_t stream_of(const std::string& what) {
+	uint64_t h = 1469598103934665603ull;
 	for (unsigned char c : what) h = (h ^ c) * 1099511628211ull;
-	return RNG(state().secret_seed.value_or(0), h);
+	return h;
+}
+} // namespace
+
+RNG case_generator(const std::string& what) {
+	return RNG(state().secret_seed.value_or(0), stream_of(what));
+}
+
+RNG scene_generator(const std::string& what) {
+	const char* variations = std::getenv("LAB_SCENE_VARIATIONS");
+	uint64_t n = variations ? std::strtoull(variations, nullptr, 10) : 0;
+	if (n == 0) return case_generator(what);
+	return RNG(state().secret_seed.value_or(0) % n, stream_of(what));
 }
 
 const Sandbox& sandbox() {

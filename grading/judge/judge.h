@@ -28,6 +28,12 @@ std::optional<uint64_t> secret_seed();
 // case's name), so that test cases draw independent cases. Only meaningful with a secret seed.
 RNG case_generator(const std::string& what);
 
+// The generator that varies a graded scene (tests/support/graded_variation.h): case_generator's,
+// but for the tests of the graders themselves, where LAB_SCENE_VARIATIONS=N in the judge's
+// environment draws from the secret seed modulo N, so that the references of N varied scenes serve
+// a run over many seeds (tests/variants/grade_variants.sh). Grading never sets it.
+RNG scene_generator(const std::string& what);
+
 const Sandbox& sandbox();
 
 // The order of a grader's messages. Test cases tag the student functions they pin down, [fn:NAME],

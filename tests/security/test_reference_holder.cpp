@@ -1,34 +1,36 @@
 // The security suite's test cases of what a student who holds the student release can hand in
 // (issue 35; DESIGN.md, decided points 6 to 8): the compiled reference of all seven tasks, the
-// reference images of the graded scenes and the framework's headers. Each submission here is graded
-// as Gradescope grades one (grade-submission without --tasks: all seven tasks in order into one
-// output folder), the tasks without a hostile file being the shipped stubs, and each hostile file
-// must earn nothing beyond its honest part in every sandbox mode (the ctest tests security*, by
-// LAB_SANDBOX). Tagged [whole]: the process-limits and ordinary-user modes run them in ./lab
-// acceptance (tests/CMakeLists.txt).
-#include "image_io.h"
-#include "security_grading.h"
-
-#include <catch2/catch.hpp>
-
-#include <algorithm>
-#include <cstdlib>
-#include <sstream>
-
+// reference images of the graded scenes and the framework's headers. Each hostile file must earn
+// nothing beyond its honest part in every sandbox mode (the ctest tests security*, by LAB_SANDBOX).
+// Tagged [whole]: with LAB_SECURITY_WHOLE=1 (./lab acceptance, in every mode) each submission is
+// graded as Gradescope grades one, all seven tasks in order into one output folder, the tasks without
+// a hostile file being the shipped stubs; otherwise (./lab test) only its hostile files' tasks are
+// graded, in order, into one folder.
 namespace fs = std::filesystem;
 
 namespace {
 
-// Every task of a whole grading was graded, and those without a hostile file (the shipped stubs)
+bool graded_whole() {
+	const char* whole = std::getenv("LAB_SECURITY_WHOLE");
+	return whole && std::string(whole) == "1";
+}
+
+// Grades a submission of `files` (see above): all seven tasks, or the files' own; `options` go to
+// grade-submission. Every task graded was, and where it had no hostile file (the shipped stubs) it
 // earned no points (the stubs pass a few test cases, which the rubric weighs 0).
-void require_stubs_earned_nothing(const std::map<int, Grade>& grades, std::initializer_list<int> hostile_tasks) {
-	REQUIRE(grades.size() == 7);
+std::map<int, Grade> grade_submission(const Temp_Dir& dir, const std::map<int, std::string>& files,
+                                      const std::string& options = "") {
+	std::string tasks;
+	for (const auto& [task, text] : files) tasks += (tasks.empty() ? "" : ",") + std::to_string(task);
+	std::map<int, Grade> grades = grade_files(dir, files, options + (graded_whole() ? "" : " --tasks " + tasks));
+	REQUIRE(grades.size() == (graded_whole() ? 7 : files.size()));
 	for (const auto& [task, graded] : grades) {
-		if (std::find(hostile_tasks.begin(), hostile_tasks.end(), task) != hostile_tasks.end()) continue;
+		if (files.count(task)) continue;
 		INFO("task " << task << " (the shipped stub)");
 		CHECK(graded.built);
 		CHECK(graded.points == 0.0);
 	}
+	return grades;
 }
 
 // reference/<task N's file> as the compiler translates it (assembly, the grading kit's compiler and
@@ -56,7 +58,7 @@ std::string image_initializer(const std::string& exr) {
 
 } // namespace
 
-TEST_CASE("machine code, data run as code and framework functions of its own earn nothing, graded whole",
+TEST_CASE("machine code, data run as code and framework functions of its own earn nothing",
           "[security][whole]") {
 	Temp_Dir dir;
 	fs::path out = dir.path() / "out";
@@ -65,8 +67,7 @@ TEST_CASE("machine code, data run as code and framework functions of its own ear
 		{3, reference_as_assembly(3, dir)},
 		{7, hostile_source("task7_defines_framework.cpp", out, {{"@STUB_TASK7@", read_file("student/task7_env_light.cpp")}})},
 	};
-	std::map<int, Grade> grades = grade_files(dir, files, "");
-	require_stubs_earned_nothing(grades, {1, 3, 7});
+	std::map<int, Grade> grades = grade_submission(dir, files);
 	// The page it would write and run as code is refused: it answers as the stub does.
 	require_nothing_earned(grades[1], "generate_ray");
 	// The compiled reference, handed in as assembly, is refused before it is linked.
@@ -81,7 +82,7 @@ TEST_CASE("machine code, data run as code and framework functions of its own ear
 	require_nothing_earned(grades[7], "defines global names that are not task 7");
 }
 
-TEST_CASE("becoming another program, or seeing what the grading built for an earlier task, earns nothing, graded whole",
+TEST_CASE("becoming another program, or seeing what the grading built for an earlier task, earns nothing",
           "[security][whole]") {
 	Temp_Dir dir;
 	fs::path out = dir.path() / "out";
@@ -91,8 +92,7 @@ TEST_CASE("becoming another program, or seeing what the grading built for an ear
 		                   {{"@REFERENCE_TASK7@", read_file("reference/task7_env_light.cpp")},
 		                    {"@STUB_TASK7@", read_file("student/task7_env_light.cpp")}})},
 	};
-	std::map<int, Grade> grades = grade_files(dir, files, "");
-	require_stubs_earned_nothing(grades, {1, 7});
+	std::map<int, Grade> grades = grade_submission(dir, files);
 	require_nothing_earned(grades[1], "generate_ray");
 	// The stub's text compiles where the earlier task's folder is out of sight (bubblewrap); where
 	// Landlock forbids it instead, the compiler stops at it.
@@ -101,16 +101,15 @@ TEST_CASE("becoming another program, or seeing what the grading built for an ear
 	CHECK(grades[7].points == 0.0);
 }
 
-TEST_CASE("its own copy of an inline framework function is never the one the subject runs, graded whole",
+TEST_CASE("its own copy of an inline framework function is never the one the subject runs",
           "[security][whole]") {
 	Temp_Dir dir;
-	std::map<int, Grade> grades = grade_files(dir, {{1, hostile_source("task1_if_inline_replaced.cpp", dir.path() / "out")}}, "");
-	require_stubs_earned_nothing(grades, {1});
+	std::map<int, Grade> grades = grade_submission(dir, {{1, hostile_source("task1_if_inline_replaced.cpp", dir.path() / "out")}});
 	require_nothing_earned(grades[1], "generate_ray");
 }
 
 TEST_CASE("task 4's answers replayed from the shipped reference image or read off the request earn nothing beyond "
-          "its honest part under a grading seed, graded whole",
+          "its honest part under a grading seed",
           "[security][whole]") {
 	Temp_Dir hostile_dir, honest_dir, public_dir;
 	std::string hostile = hostile_source("task4_derived_answers.cpp", hostile_dir.path() / "out",
@@ -124,14 +123,13 @@ TEST_CASE("task 4's answers replayed from the shipped reference image or read of
 	                     "\t(void)rng;\n\treturn eye_light(ray, hit);\n}\n";
 	// In public the replayed image is right: the shipped reference is the reference of the scene
 	// graded (and the attack works).
-	Grade in_public = grade_files(public_dir, {{4, hostile}}, "")[4];
+	Grade in_public = grade_submission(public_dir, {{4, hostile}})[4];
 	INFO("in public: " << in_public.messages.substr(0, 2000));
 	CHECK(in_public.built);
 	CHECK_THAT(in_public.passed_names, Catch::VectorContains(std::string("the graded scene cornell_diffuse renders like its reference image")));
 	// Under a grading seed, nothing beyond what the honest part earns.
-	std::map<int, Grade> graded = grade_files(hostile_dir, {{4, hostile}}, "--seed 4242");
-	std::map<int, Grade> honest_graded = grade_files(honest_dir, {{4, honest}}, "--seed 4242");
-	require_stubs_earned_nothing(graded, {4});
+	std::map<int, Grade> graded = grade_submission(hostile_dir, {{4, hostile}}, "--seed 4242");
+	std::map<int, Grade> honest_graded = grade_submission(honest_dir, {{4, honest}}, "--seed 4242");
 	INFO("the hostile file's messages:\n" << graded[4].messages.substr(0, 1500));
 	std::string honest_failed;
 	for (const std::string& name : honest_graded[4].failed) honest_failed += "\n  " + name;
@@ -147,20 +145,19 @@ TEST_CASE("task 4's answers replayed from the shipped reference image or read of
 }
 
 TEST_CASE("an answer claiming more results than its bytes hold costs the judge no more than its bytes, and one larger "
-          "than any answer is refused unread, graded whole",
+          "than any answer is refused unread",
           "[security][whole]") {
 	// 60 MiB of zeros saying 60 million rays follow: decoded as rays for the bytes there are (about
 	// 36 a ray), never allocated for the count.
 	Temp_Dir amplified_dir, huge_dir;
-	std::map<int, Grade> amplified = grade_files(
+	std::map<int, Grade> amplified = grade_submission(
 		amplified_dir, {{1, hostile_source("task1_amplified_answer.cpp", amplified_dir.path() / "out", {{"@LENGTH@", "uint64_t(60) << 20"}})}},
 		"--time-limit 10");
-	require_stubs_earned_nothing(amplified, {1});
 	require_nothing_earned(amplified[1], "generate_ray");
 	INFO("the largest process of the grading held " << amplified[1].largest_process_kib << " KiB");
 	CHECK(amplified[1].largest_process_kib < 512 * 1024);
 	// 200 MiB: more than 64 MiB + 16 times any task-1 request, refused before it is read.
-	std::map<int, Grade> huge = grade_files(
+	std::map<int, Grade> huge = grade_submission(
 		huge_dir, {{1, hostile_source("task1_amplified_answer.cpp", huge_dir.path() / "out", {{"@LENGTH@", "uint64_t(200) << 20"}})}},
 		"--time-limit 10");
 	require_nothing_earned(huge[1], "answer is too large");

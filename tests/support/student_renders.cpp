@@ -48,7 +48,7 @@ void check_renders_like_reference(const Image_Test& test) {
 	// (graded_variation.h); in public, the scene file and its stored reference.
 	std::optional<nlohmann::ordered_json> varied;
 	if (judge::secret_seed()) {
-		RNG variation = judge::case_generator("scene " + test.name);
+		RNG variation = judge::scene_generator("scene " + test.name);
 		varied = vary_graded_scene(graded, variation);
 	}
 	Scene scene = varied ? load_scene(*varied, graded_scene_file(graded.name)) : load_graded(graded);

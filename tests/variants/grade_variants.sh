@@ -28,6 +28,12 @@ allowed=$(awk -v n="$count" -v p="$ALPHA" -v level="$LEVEL" 'BEGIN {
 
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
+# Under a grading seed the judges vary each graded scene and render its reference (a minute or so,
+# tests/support/graded_variation.h): here LAB_SCENE_VARIATIONS (default 4) varied scenes serve every
+# seed (grading/judge/judge.h, scene_generator), their references kept in the build's reference cache,
+# where grade-submission keeps them too (LAB_REFERENCE_CACHE).
+export LAB_SCENE_VARIATIONS=${LAB_SCENE_VARIATIONS:-4}
+export LAB_REFERENCE_CACHE=${LAB_REFERENCE_CACHE:-$(dirname "$(dirname "$judge")")/grading/reference-cache}
 # One run: its failures in $scratch/<variant>.<seed>.cases ("NAME<TAB>SEED" lines) and its output's
 # first lines in $scratch/<variant>.<seed>.first.
 grade_one() {
