@@ -6,6 +6,15 @@
 // graded as Gradescope grades one, all seven tasks in order into one output folder, the tasks without
 // a hostile file being the shipped stubs; otherwise (./lab test) only its hostile files' tasks are
 // graded, in order, into one folder.
+#include "image_io.h"
+#include "security_grading.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdlib>
+#include <sstream>
+
 namespace fs = std::filesystem;
 
 namespace {
