@@ -6,7 +6,7 @@
 #include "report_record.h"
 #include "z_heat_map.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <sstream>
 

@@ -7,7 +7,7 @@
 #include "judge.h"
 #include "tree_check.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -4,7 +4,7 @@
 #include "sphere_chi2.h"
 #include "student_overlapped.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <future>
 #include <iterator>
