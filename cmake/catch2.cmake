@@ -26,9 +26,6 @@ target_link_libraries(lab_catch2 INTERFACE Catch2::Catch2)
 # ships its main compiled, against GCC's standard library, so a build with another (clang's libc++)
 # compiles it from the header instead.
 add_library(lab_catch2_main INTERFACE)
-include(CheckCXXSourceCompiles)
-check_cxx_source_compiles("#include <cstddef>\n#ifndef _LIBCPP_VERSION\n#error not libc++\n#endif\nint main() {}"
-	LAB_LIBCXX)
 if(Catch2_VERSION_MAJOR EQUAL 2 AND LAB_LIBCXX)
 	add_library(lab_catch2_main_object OBJECT ${PROJECT_SOURCE_DIR}/tests/support/catch2_seam/catch2_main.cpp)
 	target_link_libraries(lab_catch2_main_object PRIVATE lab_catch2)
