@@ -134,10 +134,13 @@ inline std::vector<Test_Case> all_test_cases(const Catch::IConfig& config) {
 
 inline Failed_Check failed_check(const Catch::AssertionStats& stats) {
 	const Catch::AssertionResult& result = stats.assertionResult;
-	Failed_Check check{result_kind(result.getResultType()), relative(result.getSourceInfo().file), result.getSourceInfo().line,
+	Failed_Check check{result_kind(result.getResultType()),
+	                   relative(result.getSourceInfo().file),
+	                   result.getSourceInfo().line,
 	                   result.hasExpression() ? result.getExpressionInMacro() : "",
 	                   result.hasExpandedExpression() ? result.getExpandedExpression() : "",
-	                   result.hasMessage() ? std::string(result.getMessage()) : "", {}};
+	                   result.hasMessage() ? std::string(result.getMessage()) : "",
+	                   {}};
 	for (const Catch::MessageInfo& info : stats.infoMessages) {
 		check.messages.push_back({std::string(info.macroName), info.message});
 	}
