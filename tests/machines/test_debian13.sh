@@ -36,8 +36,8 @@ took "a Debian 13 root and a clone of $(git -C "$root" rev-parse --short HEAD)" 
 start=$SECONDS
 student machine "$system" "./lab render" >"$out/render.out" 2>"$out/render.log" ||
 	fail "./lab render failed: $(tail -20 "$out/render.log")"
-png=$(tail -1 "$out/render.out")
-[ -s "$system$png" ] || fail "./lab render did not write its PNG ($png): $(tail -5 "$out/render.out")"
+png=$(sed -n 's/^wrote \([^ ]*\.png\)$/\1/p' "$out/render.out" | head -1)
+[ -n "$png" ] && [ -s "$home/lab/$png" ] || fail "./lab render did not write its PNG: $(tail -5 "$out/render.out")"
 versions=$(in_root machine "$system" dpkg-query -W -f '${Package} ${Version}, ' libcatch2-dev g++ cmake libglm-dev \
 	libcpp-httplib-dev libtinyobjloader-dev bubblewrap)
 took "./lab render (packages: ${versions%, })" "$start"
