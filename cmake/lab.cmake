@@ -25,11 +25,6 @@ function(lab_defaults target)
 	if(arg_OPTIMIZED AND LAB_LTO)
 		set_property(TARGET ${target} PROPERTY INTERPROCEDURAL_OPTIMIZATION_RELEASE ON)
 		target_compile_options(${target} PRIVATE $<$<CONFIG:Release>:-ffat-lto-objects>)
-		# GCC's link-time inlining of std::variant<Sphere, Tri_Mesh>'s move (a vector of Instance
-		# growing) makes it think members of the moved alternative "may be used uninitialized"
-		# (GCC 12 names std::vector's and std::shared_ptr's members, GCC 14 also BVH::root_idx, which is
-		# initialized): false alarms only there. Each file is still compiled with the warning on.
-		target_link_options(${target} PRIVATE $<$<AND:$<CONFIG:Release>,$<CXX_COMPILER_ID:GNU>>:-Wno-maybe-uninitialized>)
 		return()
 	endif()
 	get_target_property(type ${target} TYPE)
