@@ -55,7 +55,7 @@ in_root() {
 
 student() {
 	in_root "$1" "$2" runuser -u student -- env HOME=/home/student PATH=/usr/bin:/bin LANG=C.UTF-8 \
-		bash -c "cd ~/lab && $3"
+		bash -c "cd ~/lab || exit; $3"
 }
 
 view_page() {
