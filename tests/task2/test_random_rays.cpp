@@ -107,7 +107,7 @@ TEST_CASE("Triangle::hit agrees with the reference on 10^5 random rays", "[id:t2
 	Tally tally;
 	for (size_t i = 0; i < queries.size(); i++) {
 		const auto& [tri, ray] = queries[i];
-		auto shape = [&] {
+		auto shape = [&tri = tri] { // (C++17 lambdas capture a structured binding only this way)
 			return "triangle " + show(tri.v0.position) + ", " + show(tri.v1.position) + ", " + show(tri.v2.position);
 		};
 		tally.add(expect_hit(tri, ray), got[i], ray, shape, "handout §2.1");
@@ -137,7 +137,7 @@ TEST_CASE("Sphere::hit agrees with the reference on 10^5 random rays", "[id:t2.s
 	Tally tally;
 	for (size_t i = 0; i < queries.size(); i++) {
 		const auto& [sphere, ray] = queries[i];
-		auto shape = [&] {
+		auto shape = [&sphere = sphere] {
 			std::ostringstream out;
 			out.precision(9);
 			out << "sphere of radius " << sphere.radius;
