@@ -2,8 +2,8 @@
 # The dev container's setup (Dockerfile), run as root in a fresh Debian 12: git, the lab's own
 # package setup (`./lab setup`: everything the lab builds, grades and views with), and the user
 # "student" (uid 1000, sudo without a password, as VS Code's dev containers have), whom
-# devcontainer.json works as. tests/machines/test_dev_container.sh runs this same script in a
-# Debian 12 root made by debootstrap.
+# devcontainer.json works as. The lab's acceptance runs (machine_dev_container) run this same script
+# in a Debian 12 root made by debootstrap.
 #   setup.sh LAB_SCRIPT
 set -euo pipefail
 lab=$1

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ./lab on a machine where the account has neither root nor sudo (label framework): with every
+# The lab script on a machine where the account has neither root nor sudo (label framework): with every
 # package present it asks for nothing; with one missing, `./lab render` names it, prints the one
 # command that installs it and exits non-zero, without running apt-get or sudo. Run as an ordinary
 # user (uid 65534 when this runs as root). dpkg-query, sudo and apt-get are stand-ins on PATH that
@@ -41,7 +41,8 @@ chmod 666 "$calls"
 
 as_user=()
 [ "$(id -u)" -ne 0 ] || as_user=(setpriv --reuid=65534 --regid=65534 --clear-groups --inh-caps=-all)
-# run_lab MISSING COMMAND...: ./lab as the ordinary user, with no terminal; its output in $scratch/out.
+# run_lab MISSING COMMAND...: the lab script as the ordinary user, with no terminal; its output in
+# $scratch/out.
 run_lab() {
 	local missing=$1
 	shift
