@@ -4,6 +4,12 @@ target_compile_features(lab_options INTERFACE cxx_std_17)
 set(LAB_WARNINGS -Wall -Wextra -Wpedantic -Wno-unused-parameter)
 target_compile_options(lab_options INTERFACE ${LAB_WARNINGS})
 
+# LAB_LIBCXX: the build uses clang's libc++ (-stdlib=libc++), not GCC's standard library, which
+# Debian's compiled C++ libraries were built with (framework/CMakeLists.txt, cmake/catch2.cmake).
+include(CheckCXXSourceCompiles)
+check_cxx_source_compiles("#include <cstddef>\n#ifndef _LIBCPP_VERSION\n#error not libc++\n#endif\nint main() {}"
+	LAB_LIBCXX)
+
 # lab_defaults(<target> [OPTIMIZED]): the lab's settings for a target.
 # OPTIMIZED: link-time optimization in Release, for the renderers and benchmarks and for the code
 # they link (the framework, the reference tasks); its objects are fat, since graders and tests link

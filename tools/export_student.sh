@@ -34,7 +34,7 @@ cmake --build "$objects" --parallel "$jobs" --target "${libraries[@]/%/_archive}
 # scripts that build a student's task file and grade it (not the instructors' scripts, rubric and
 # README).
 mkdir -p "$dest/tests" "$dest/prebuilt" "$dest/grading/bin"
-(cd "$root" && cp -R CMakeLists.txt CMakePresets.json lab cmake framework tasks student scenes handouts "$dest/")
+(cd "$root" && cp -R CMakeLists.txt CMakePresets.json lab .devcontainer cmake framework tasks student scenes handouts "$dest/")
 for source in "${shipped_compiled[@]}"; do rm -f "$dest/$source"; done
 find "$dest/framework" -type d -empty -delete
 (cd "$root/grading" && cp -R CMakeLists.txt judge report checks "$dest/grading/" &&

@@ -1,5 +1,5 @@
 #pragma once
-#include "math.h"
+#include "vec_math.h"
 
 // An orthonormal shading frame. Local coordinates have the surface normal along +y, as every BSDF
 // in the lab expects: a local direction w has cos(theta) = w.y.

@@ -1,5 +1,5 @@
 #pragma once
-#include "math.h"
+#include "vec_math.h"
 
 // A ray r(t) = point + t * dir.
 //

@@ -1,5 +1,5 @@
 #pragma once
-#include "math.h"
+#include "vec_math.h"
 
 // The hit record ("Trace") that every intersection routine returns.
 struct Trace {

@@ -1,4 +1,5 @@
 #include "cli_options.h"
+#include "decimal.h"
 #include "error.h"
 
 #include <algorithm>
@@ -35,9 +36,7 @@ template<typename T> T whole_number(const std::string& option, const std::string
 float stops(const std::string& option, const std::string& text) {
 	constexpr float LIMIT = 64.0f; // 2^64 is far beyond any useful exposure
 	float value = 0.0f;
-	const char* end = text.data() + text.size();
-	auto [stop, status] = std::from_chars(text.data(), end, value);
-	if (status != std::errc() || stop != end || !(std::abs(value) <= LIMIT)) {
+	if (!parse_decimal(text, value) || !(std::abs(value) <= LIMIT)) {
 		throw Input_Error(option + ": expected a number of stops from -64 to 64, got '" + text + "'");
 	}
 	return value;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 #include <stdexcept>
 
@@ -55,17 +56,25 @@ void require_same_size(const std::string& caller, const HDR_Image& x, const HDR_
 	}
 }
 
-std::string describe(const Image_Comparison& c, uint32_t w, uint32_t h) {
+// How many pixels differ beyond noise and how many may, in words (`alpha`: the chance that a correct
+// render has more than allowed_outliers, for a calibrated comparison); where they are, the worst.
+std::string describe(const Image_Comparison& c, uint32_t w, uint32_t h, double alpha) {
 	std::ostringstream out;
-	out << c.outliers << " of " << w * h << " pixels (" << c.failed << " of " << c.tests
-	    << " pixel channels) differ from the reference by more than |z| = " << c.z_critical << " (allowed: "
-	    << c.allowed_outliers << (c.lambda >= 0.0 ? " pixels; a correct render has " : " pixel channels");
-	if (c.lambda >= 0.0) out << c.lambda << " on average, at most";
-	out << ")";
+	out << std::setprecision(3) << c.outliers << " of the " << w * h << " pixels (" << c.failed << " of " << c.tests
+	    << " pixel channels) differ from the reference by more than its noise explains (|z| above " << c.z_critical
+	    << "). ";
+	if (c.lambda >= 0.0) {
+		out << "Up to " << c.allowed_outliers << " may: even a correct render has a few, pixels whose few samples "
+		    << "caught a rare bright path (" << c.lambda << " on average, at most), and more than "
+		    << c.allowed_outliers << " only with a chance below " << std::setprecision(2) << 100.0 * alpha << " %";
+	} else {
+		out << "Up to " << c.allowed_outliers << " pixel channels may (" << 100.0 * (1.0 - IMAGE_MIN_PASS_FRACTION)
+		    << " % of them): both renders are still noisy";
+	}
 	if (c.failed) {
-		out << "; they lie in pixels x " << c.box_x0 << ".." << c.box_x1 << ", y " << c.box_y0 << ".." << c.box_y1
-		    << " of the " << w << " x " << h << " image (0, 0 = top-left); the worst is pixel (" << c.worst_x << ", "
-		    << c.worst_y << ") with z = " << c.worst_z
+		out << std::setprecision(6) << "; they lie in pixels x " << c.box_x0 << ".." << c.box_x1 << ", y " << c.box_y0
+		    << ".." << c.box_y1 << " of the " << w << " x " << h << " image (0, 0 = top-left); the worst is pixel ("
+		    << c.worst_x << ", " << c.worst_y << ") with z = " << c.worst_z
 		    << (c.worst_z > 0 ? " (the render is too bright there)" : " (the render is too dark there)");
 	}
 	out << "; relMSE = " << c.rel_mse;
@@ -158,7 +167,7 @@ Image_Comparison compare_images(const Image_Estimate& render, const Image_Estima
 		c.allowed_outliers = allowed_outliers(c.lambda, alpha_check);
 	}
 	c.means_pass = c.outliers <= c.allowed_outliers;
-	c.message = describe(c, render.mean.w, render.mean.h);
+	c.message = describe(c, render.mean.w, render.mean.h, alpha_check);
 	c.noise = compare_noise(render, reference, alpha_check);
 	c.noise_message = describe(c.noise, "the render, summed over its pixels and channels,");
 	c.pass = c.means_pass && c.noise.pass;
@@ -170,7 +179,7 @@ Image_Comparison compare_estimators(const Image_Estimate& noisier, const Image_E
 	c.allowed_outliers = size_t((1.0 - IMAGE_MIN_PASS_FRACTION) * double(c.tests)); // channels, here
 	c.lambda = -1.0;                                                                // not calibrated
 	c.means_pass = c.failed <= c.allowed_outliers;
-	c.message = describe(c, noisier.mean.w, noisier.mean.h);
+	c.message = describe(c, noisier.mean.w, noisier.mean.h, 0.0);
 	c.noise.pass = true;
 	c.pass = c.means_pass;
 	return c;

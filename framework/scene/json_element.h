@@ -4,7 +4,7 @@
 // so a bad value becomes ONE message:
 //     Input_Error("<file>: <element>: expected <what was expected>, found <what was there>")
 // Internal to the framework (the scene loader); nothing here is part of the students' API.
-#include "math.h"
+#include "vec_math.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,4 +1,5 @@
 #include "obj_check.h"
+#include "decimal.h"
 #include "error.h"
 
 #include <charconv>
@@ -83,9 +84,7 @@ private:
 		for (size_t i = 1; i <= 3; i++) {
 			std::string_view word = words[i].substr(words[i].rfind('+', 0) == 0 ? 1 : 0);
 			double value = 0.0;
-			auto [end, status] = std::from_chars(word.data(), word.data() + word.size(), value);
-			bool number = status == std::errc() && end == word.data() + word.size();
-			if (!number || !std::isfinite(float(value))) {
+			if (!parse_decimal(word, value) || !std::isfinite(float(value))) {
 				fail(std::string(name) + " coordinate '" + std::string(words[i]) + "' is not a finite number (expected \"" +
 				     form + "\")");
 			}

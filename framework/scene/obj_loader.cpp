@@ -4,6 +4,9 @@
 #include "obj_check.h"
 #include "text_file.h"
 
+#ifdef LAB_TINYOBJLOADER_FROM_HEADER // a build with libc++ (framework/CMakeLists.txt)
+#define TINYOBJLOADER_IMPLEMENTATION
+#endif
 #include <tiny_obj_loader.h>
 
 namespace {

@@ -1,4 +1,5 @@
 #include "viewer_server.h"
+#include "decimal.h"
 #include "page_files.h"
 
 #include <httplib.h>
@@ -56,8 +57,7 @@ float stops(const httplib::Request& req) {
 	if (!req.has_param("exposure")) return 0.0f;
 	std::string text = req.get_param_value("exposure");
 	float value = 0.0f;
-	auto [end, status] = std::from_chars(text.data(), text.data() + text.size(), value);
-	if (status != std::errc() || end != text.data() + text.size() || !(std::abs(value) <= 64.0f)) {
+	if (!parse_decimal(text, value) || !(std::abs(value) <= 64.0f)) {
 		throw Request_Error(400, "exposure: expected a number of stops from -64 to 64, got '" + text + "'");
 	}
 	return value;

@@ -2,11 +2,10 @@
 //
 //   judge_taskN --subject PROGRAM [--seed S | --seed @FILE] [--sandbox auto|bubblewrap|process-limits|none]
 //               [--time-limit SECONDS] [--cpu-limit SECONDS] [--save-requests DIR] [Catch2 options]
-#define CATCH_CONFIG_RUNNER
-#define CATCH_CONFIG_EXTERNAL_INTERFACES
-#include <catch2/catch.hpp>
+#include "catch2_session.h" // first: with Catch2 2, its runner is compiled here
 
 #include "judge.h"
+#include "lab_reporter.h"
 #include "verdict_summary.h"
 
 #include <cctype>
@@ -19,6 +18,7 @@
 
 #include <sys/prctl.h>
 #include <sys/resource.h>
+#include <unistd.h>
 
 namespace {
 
@@ -57,26 +57,22 @@ std::string requests_file() {
 }
 
 // Starts each test case with no subject and its own time limit, and ends its subject with it.
-class Subject_Lifecycle : public Catch::TestEventListenerBase {
+class Subject_Lifecycle : public catch2_seam::Events {
 public:
-	using TestEventListenerBase::TestEventListenerBase;
-
-	void testCaseStarting(const Catch::TestCaseInfo& info) override {
-		TestEventListenerBase::testCaseStarting(info);
+	void test_case_starting(const catch2_seam::Test_Case& test_case) override {
 		Judge_State& s = state();
 		s.subject.reset();
-		s.test_case = info.name;
+		s.test_case = test_case.name;
 		s.test_case_number++;
 		s.deadline = Subject::Clock::now() + std::chrono::duration_cast<Subject::Clock::duration>(
 		                                        std::chrono::duration<double>(s.sandbox->limits().test_case_seconds));
 		if (!s.save_dir.empty()) std::filesystem::remove(requests_file());
 	}
 
-	void testCaseEnded(const Catch::TestCaseStats& stats) override {
-		TestEventListenerBase::testCaseEnded(stats);
+	void test_case_ended(const catch2_seam::Test_Case&, catch2_seam::Counts checks) override {
 		Judge_State& s = state();
 		s.subject.reset();
-		if (!s.save_dir.empty() && stats.totals.assertions.failed == 0) std::filesystem::remove(requests_file());
+		if (!s.save_dir.empty() && checks.failed == 0) std::filesystem::remove(requests_file());
 	}
 };
 
@@ -95,7 +91,7 @@ std::optional<uint64_t> parse_seed(const std::string& text) {
 
 } // namespace
 
-CATCH_REGISTER_LISTENER(Subject_Lifecycle)
+LAB_CATCH2_LISTENER(Subject_Lifecycle)
 
 namespace judge {
 
@@ -140,21 +136,6 @@ const Sandbox& sandbox() {
 
 } // namespace judge
 
-// Catch2's console reporter without the banner it prints before the first failure ("judge_taskN is
-// a Catch v2 host application. Run with -? for options"), so that the first screen belongs to the
-// student's mistake. The judge's default reporter; -r chooses another.
-struct Lab_Reporter : Catch::ConsoleReporter {
-	using ConsoleReporter::ConsoleReporter;
-	static std::string getDescription() {
-		return "Catch2's console reporter without its banner (the judge's default)";
-	}
-	void testRunStarting(const Catch::TestRunInfo& info) override {
-		ConsoleReporter::testRunStarting(info);
-		currentTestRunInfo.used = true; // the banner counts as printed
-	}
-};
-CATCH_REGISTER_REPORTER("lab", Lab_Reporter)
-
 int main(int argc, char** argv) {
 	// Not dumpable: a subject running as the same user (process limits, no Landlock) can neither
 	// trace the judge nor read or write its memory through /proc.
@@ -167,11 +148,10 @@ int main(int argc, char** argv) {
 	setrlimit(RLIMIT_AS, &memory);
 	wire::keep_large_buffers();
 	Catch::Session session;
-	session.configData().reporterName = "lab";
 	Judge_State& s = state();
 	std::string sandbox_mode = "auto", seed_text, check_sandbox;
 	double time_limit = 0.0, cpu_limit = 0.0;
-	using Catch::clara::Opt;
+	using catch2_seam::cli::Opt;
 	session.cli(session.cli() |
 	            Opt(s.program, "program")["--subject"]("the subject program that runs the code under test") |
 	            Opt(seed_text, "seed|@file")["--seed"]("an instructor's secret grading seed, or a file holding it") |
@@ -180,7 +160,7 @@ int main(int argc, char** argv) {
 	            Opt(cpu_limit, "seconds")["--cpu-limit"]("CPU time of one test case's subject (default 90)") |
 	            Opt(s.save_dir, "folder")["--save-requests"]("save failed test cases' requests for --replay") |
 	            Opt(check_sandbox, "mode")["--check-sandbox"]("say how subjects would run in that mode, and exit"));
-	if (int status = session.applyCommandLine(argc, argv)) return status;
+	if (int status = catch2_seam::apply_command_line(session, argc, argv, LAB_REPORTER)) return status;
 	if (!check_sandbox.empty()) {
 		try {
 			std::cout << Sandbox::choose(check_sandbox).notice() << "\n";
@@ -190,7 +170,7 @@ int main(int argc, char** argv) {
 			return 3;
 		}
 	}
-	if (session.configData().listTests || session.configData().listTestNamesOnly || session.configData().showHelp) {
+	if (catch2_seam::lists_only(session)) {
 		s.sandbox = Sandbox::choose("none");
 		return session.run();
 	}
@@ -213,9 +193,10 @@ int main(int argc, char** argv) {
 		std::cerr << "judge: " << problem.what() << "\n";
 		return 2;
 	}
-	std::cout << s.sandbox->notice() << "\n"
-	          << (s.secret_seed ? "inputs: drawn from the grading seed" : "inputs: the public test cases") << "\n";
 	int status = session.run();
 	print_verdict_summary(std::cout);
+	// How the code ran, after what it did: a student's first lines are the first failure's message.
+	std::cout << s.sandbox->notice() << "\n"
+	          << (s.secret_seed ? "inputs: drawn from the grading seed" : "inputs: the public test cases") << "\n";
 	return status;
 }

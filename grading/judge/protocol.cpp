@@ -6,7 +6,8 @@ namespace {
 // The NAME or FUNCTIONS of the request whose KIND is `kind`, or `unknown`.
 template<class... Request> const char* find_text(std::tuple<Request...>*, Kind kind, bool functions, const char* unknown) {
 	const char* text = unknown;
-	((kind == Request::KIND ? (text = functions ? Request::FUNCTIONS : Request::NAME, true) : false) || ...);
+	// A fold over the list that stops at the first match (the names are never null).
+	(void)((kind == Request::KIND && (text = functions ? Request::FUNCTIONS : Request::NAME)) || ...);
 	return text;
 }
 } // namespace

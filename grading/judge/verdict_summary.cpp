@@ -1,9 +1,7 @@
 // The order and the end of a judge's messages (judge.h): "fix NAME first" notes on test cases whose
 // prerequisites failed, and the summary that ends the run, one line per failed test case (or the
 // task's key figures when everything passed).
-#define CATCH_CONFIG_EXTERNAL_INTERFACES
-#include <catch2/catch.hpp>
-
+#include "catch2_events.h"
 #include "judge.h"
 #include "verdict_summary.h"
 
@@ -31,14 +29,6 @@ Summary_State& summary() {
 	return s;
 }
 
-std::vector<std::string> tagged(const Catch::TestCaseInfo& info, const std::string& prefix) {
-	std::vector<std::string> names;
-	for (const std::string& tag : info.tags) {
-		if (tag.rfind(prefix, 0) == 0) names.push_back(tag.substr(prefix.size()));
-	}
-	return names;
-}
-
 std::string one_line(std::string text) {
 	for (char& c : text) {
 		if (c == '\n') c = ' ';
@@ -47,66 +37,58 @@ std::string one_line(std::string text) {
 	return text.size() > MAX ? text.substr(0, MAX - 3) + "..." : text;
 }
 
-class Verdict_Order : public Catch::TestEventListenerBase {
+class Verdict_Order : public catch2_seam::Events {
 public:
-	using TestEventListenerBase::TestEventListenerBase;
-
-	void testCaseStarting(const Catch::TestCaseInfo& info) override {
-		TestEventListenerBase::testCaseStarting(info);
+	void test_case_starting(const catch2_seam::Test_Case& test_case) override {
 		Summary_State& s = summary();
 		s.test_cases++;
 		s.first_message.clear();
 		s.prerequisites_failed.clear();
-		for (const std::string& function : tagged(info, "uses:")) {
+		for (const std::string& function : test_case.tagged("uses:")) {
 			if (s.failed_functions.count(function)) s.prerequisites_failed.push_back(function);
 		}
 	}
 
 	// Every section (the test case's own too) starts without messages: the note goes first.
-	void sectionStarting(const Catch::SectionInfo& info) override {
-		TestEventListenerBase::sectionStarting(info);
+	void section_starting() override {
 		for (const std::string& function : summary().prerequisites_failed) {
-			Catch::MessageInfo note("INFO", info.lineInfo, Catch::ResultWas::Info);
-			note.message = "Fix " + function + " first: its own test cases fail (above), and this test case uses it, "
-			               "so what follows may only be a consequence";
-			Catch::getResultCapture().pushScopedMessage(note);
+			catch2_seam::push_note("Fix " + function + " first: its own test cases fail (above), and this test case "
+			                       "uses it, so what follows may only be a consequence");
 		}
 	}
 
-	bool assertionEnded(const Catch::AssertionStats& stats) override {
+	void check_failed(const catch2_seam::Failed_Check& check) override {
 		Summary_State& s = summary();
-		if (stats.assertionResult.isOk() || !s.first_message.empty()) return false;
+		if (!s.first_message.empty()) return;
 		// The message that explains: the first that cites a handout section (§), else the first (never
 		// the "fix first" note, never a CAPTURE of a variable).
 		std::string first;
-		for (const Catch::MessageInfo& info : stats.infoMessages) {
-			if (info.message.rfind("Fix ", 0) == 0 && !s.prerequisites_failed.empty()) continue;
-			if (info.macroName == "CAPTURE") continue;
-			if (first.empty()) first = info.message;
-			if (info.message.find("§") != std::string::npos) {
-				s.first_message = info.message;
+		for (const catch2_seam::Message& message : check.messages) {
+			if (message.text.rfind("Fix ", 0) == 0 && !s.prerequisites_failed.empty()) continue;
+			if (message.macro == "CAPTURE") continue;
+			if (first.empty()) first = message.text;
+			if (message.text.find("§") != std::string::npos) {
+				s.first_message = message.text;
 				break;
 			}
 		}
 		if (s.first_message.empty()) s.first_message = first;
-		if (s.first_message.empty()) s.first_message = stats.assertionResult.getMessage();
-		if (s.first_message.empty()) s.first_message = stats.assertionResult.getExpandedExpression();
-		return false;
+		if (s.first_message.empty()) s.first_message = check.result_message;
+		if (s.first_message.empty()) s.first_message = check.expansion;
 	}
 
-	void testCaseEnded(const Catch::TestCaseStats& stats) override {
-		TestEventListenerBase::testCaseEnded(stats);
+	void test_case_ended(const catch2_seam::Test_Case& test_case, catch2_seam::Counts checks) override {
 		Summary_State& s = summary();
-		if (stats.totals.assertions.failed == 0) return;
-		for (const std::string& function : tagged(stats.testInfo, "fn:")) s.failed_functions.insert(function);
+		if (checks.failed == 0) return;
+		for (const std::string& function : test_case.tagged("fn:")) s.failed_functions.insert(function);
 		std::string prefix = s.prerequisites_failed.empty() ? "" : "(after " + s.prerequisites_failed.front() + ") ";
-		s.failed.push_back({stats.testInfo.name, prefix + s.first_message});
+		s.failed.push_back({test_case.name, prefix + s.first_message});
 	}
 };
 
 } // namespace
 
-CATCH_REGISTER_LISTENER(Verdict_Order)
+LAB_CATCH2_LISTENER(Verdict_Order)
 
 namespace judge {
 

@@ -9,11 +9,9 @@
 //
 // Linked into every grader as an object (tests/CMakeLists.txt): from a static library the linker
 // would drop it, since nothing calls it.
+#include "catch2_events.h"
 #include "judge.h"
 #include "report_record.h"
-
-#define CATCH_CONFIG_EXTERNAL_INTERFACES // the reporter and listener types
-#include <catch2/catch.hpp>
 
 #include <cstdio>
 #include <filesystem>
@@ -25,92 +23,60 @@ using Json = nlohmann::ordered_json;
 
 constexpr size_t MAX_FAILURES = 20; // recorded per test case; the others are only counted
 
-std::string source_path(const char* file) {
-	std::error_code error;
-	std::filesystem::path relative = std::filesystem::proximate(file, error);
-	return error ? std::string(file) : relative.string();
-}
-
-std::string result_kind(Catch::ResultWas::OfType type) {
-	switch (type) {
-	case Catch::ResultWas::ThrewException: return "unexpected exception";
-	case Catch::ResultWas::DidntThrowException: return "expected an exception";
-	case Catch::ResultWas::FatalErrorCondition: return "crash";
-	case Catch::ResultWas::ExplicitFailure: return "failure";
-	default: return "check";
-	}
-}
-
-// A test case's id: ID of its tag [id:ID] (cmake/test_case_ids.cmake), or "" if it has none.
-std::string test_case_id(const Catch::TestCaseInfo& info) {
-	const std::string prefix = "id:";
-	for (const std::string& tag : info.tags) {
-		if (tag.rfind(prefix, 0) == 0) return tag.substr(prefix.size());
-	}
-	return "";
-}
-
 // One failed check: where, what, and the messages that explain it.
-Json failure_record(const Catch::AssertionStats& stats) {
-	const Catch::AssertionResult& result = stats.assertionResult;
+Json failure_record(const catch2_seam::Failed_Check& check) {
 	Json messages = Json::array();
-	for (const Catch::MessageInfo& info : stats.infoMessages) messages.push_back(info.message);
-	Catch::SourceLineInfo where = result.getSourceInfo();
-	return Json{{"kind", result_kind(result.getResultType())},
-	            {"file", source_path(where.file)},
-	            {"line", where.line},
-	            {"expression", result.hasExpression() ? result.getExpressionInMacro() : ""},
-	            {"expansion", result.hasExpandedExpression() ? result.getExpandedExpression() : ""},
-	            {"messages", messages}};
+	for (const catch2_seam::Message& message : check.messages) messages.push_back(message.text);
+	return Json{{"kind", check.kind},           {"file", check.file},
+	            {"line", check.line},           {"expression", check.expression},
+	            {"expansion", check.expansion}, {"messages", messages}};
 }
 
-class Report_Listener : public Catch::TestEventListenerBase {
-public:
-	using TestEventListenerBase::TestEventListenerBase;
+// The record of a test case: its id (its tag [id:ID], cmake/test_case_ids.cmake, or "" if it has
+// none) and title.
+Json test_case_record(const catch2_seam::Test_Case& test_case) {
+	std::vector<std::string> ids = test_case.tagged("id:");
+	return Json{{"id", ids.empty() ? "" : ids.front()}, {"name", test_case.name}};
+}
 
-	void testRunStarting(const Catch::TestRunInfo& info) override {
-		TestEventListenerBase::testRunStarting(info);
-		grader = info.name;
-		// Every test case the judge has, whatever this run selected: a task passes only when each ran.
-		for (const Catch::TestCase& test_case : Catch::getAllTestCasesSorted(*m_config)) {
-			expected.push_back(Json{{"id", test_case_id(test_case)}, {"name", test_case.name}});
-		}
+class Report_Listener : public catch2_seam::Events {
+public:
+	// `all_test_cases`: every test case the judge has, whatever this run selected: a task passes only
+	// when each ran.
+	void run_starting(const std::string& program, const std::vector<catch2_seam::Test_Case>& all_test_cases) override {
+		grader = program;
+		for (const catch2_seam::Test_Case& test_case : all_test_cases) expected.push_back(test_case_record(test_case));
 		write(false);
 	}
 
-	void testCaseStarting(const Catch::TestCaseInfo& info) override {
-		TestEventListenerBase::testCaseStarting(info);
-		running = Json{{"id", test_case_id(info)}, {"name", info.name}, {"file", source_path(info.lineInfo.file)},
-		               {"line", info.lineInfo.line}, {"passed", false}, {"failures", Json::array()}, {"more_failures", 0}};
+	void test_case_starting(const catch2_seam::Test_Case& test_case) override {
+		running = test_case_record(test_case);
+		running.update(Json{{"file", test_case.file}, {"line", test_case.line}, {"passed", false},
+		                    {"failures", Json::array()}, {"more_failures", 0}});
 		report::take_attachments(); // none belong to this test case yet
 		write(false);
 	}
 
-	bool assertionEnded(const Catch::AssertionStats& stats) override {
-		if (stats.assertionResult.isOk() || running.is_null()) return false;
-		// Catch2 reports a fatal signal (a crash, or the time limit's SIGTERM) as a failed assertion.
-		if (stats.assertionResult.getResultType() == Catch::ResultWas::FatalErrorCondition) {
-			fatal_error = stats.assertionResult.getMessage();
-		}
+	void check_failed(const catch2_seam::Failed_Check& check) override {
+		if (running.is_null()) return;
+		// Catch2 reports a fatal signal (a crash, or the time limit's SIGTERM) as a failed check.
+		if (check.kind == "crash") fatal_error = check.result_message;
 		Json& failures = running["failures"];
 		if (failures.size() < MAX_FAILURES) {
-			failures.push_back(failure_record(stats));
+			failures.push_back(failure_record(check));
 		} else {
 			running["more_failures"] = running["more_failures"].get<size_t>() + 1;
 		}
-		return false;
 	}
 
-	void testCaseEnded(const Catch::TestCaseStats& stats) override {
-		TestEventListenerBase::testCaseEnded(stats);
-		running["passed"] = stats.totals.assertions.failed == 0;
+	void test_case_ended(const catch2_seam::Test_Case&, catch2_seam::Counts checks) override {
+		running["passed"] = checks.failed == 0;
 		running["attachments"] = report::take_attachments();
 		test_cases.push_back(std::exchange(running, Json()));
 		write(false);
 	}
 
-	void testRunEnded(const Catch::TestRunStats& stats) override {
-		TestEventListenerBase::testRunEnded(stats);
+	void run_ended(catch2_seam::Counts, catch2_seam::Counts) override {
 		write(true);
 	}
 
@@ -138,4 +104,4 @@ private:
 
 } // namespace
 
-CATCH_REGISTER_LISTENER(Report_Listener)
+LAB_CATCH2_LISTENER(Report_Listener)

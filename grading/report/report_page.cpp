@@ -19,7 +19,6 @@ body { font-family: sans-serif; max-width: 1100px; margin: 0 auto; padding: 1em 
 h1 { margin-bottom: 0.2em; }
 h2 { border-bottom: 1px solid #d0d7de; padding-bottom: 0.2em; margin-top: 2em; }
 h3 { font-size: 1em; margin: 0 0 0.4em 0; }
-h3 .where { font-weight: normal; margin-left: 0.5em; }
 code, pre { font-family: monospace; font-size: 0.9em; }
 pre { background: #f6f8fa; padding: 0.6em; overflow-x: auto; white-space: pre-wrap; }
 table { border-collapse: collapse; }
@@ -118,11 +117,12 @@ void failure(std::ostream& out, const Failure& f, bool same_messages_as_before) 
 	if (!same_messages_as_before) {
 		for (const std::string& text : f.messages) message(out, text);
 	}
-	out << "<div class=\"where\">" << escape(f.where);
+	// Where the check is in the graders' code and what it evaluated: for instructors, folded away.
+	out << "<details class=\"where\"><summary>the check, for instructors</summary>" << escape(f.where);
 	if (!f.expression.empty()) out << " · <code>" << escape(f.expression) << "</code>";
 	if (!f.expansion.empty()) out << " with values <code>" << escape(f.expansion) << "</code>";
 	if (f.expression.empty() && f.kind != "check" && f.kind != "failure") out << " · " << escape(f.kind);
-	out << "</div>\n</div>\n";
+	out << "</details>\n</div>\n";
 }
 
 void figure(std::ostream& out, const std::filesystem::path& file, const std::string& caption) {
@@ -157,7 +157,7 @@ void failures(std::ostream& out, const std::vector<Failure>& all, size_t first, 
 
 void test_case(std::ostream& out, const Test_Case& c, const std::string& log_file) {
 	out << "<div class=\"case" << (c.passed ? " passed" : "") << "\">\n<h3>" << (c.passed ? "✓ " : "✗ ")
-	    << escape(c.name) << " <span class=\"where\">" << escape(c.where) << "</span></h3>\n";
+	    << escape(c.name) << "</h3>\n";
 	for (const Image_Test& test : c.image_tests) image_test(out, test, c.failures.empty());
 	size_t shown = std::min(c.failures.size(), FAILURES_SHOWN);
 	failures(out, c.failures, 0, shown);

@@ -8,7 +8,7 @@
 #include "render.h"
 #include "scene_loader.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <array>
 #include <cstdio>

@@ -11,7 +11,7 @@
 #include "pathtracer.h"
 #include "statistics.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
@@ -303,7 +303,7 @@ TEST_CASE("only emissive objects and the environment are lights", "[area_lights]
 	// Without lights no direction has a light density, and sampling one is a clear error, not a crash.
 	CHECK(pt.area_lights_pdf(Vec3{0.0f, 2.0f, 0.0f}, Vec3{0.0f, -1.0f, 0.0f}) == 0.0f);
 	RNG rng(1);
-	CHECK_THROWS_WITH(pt.sample_area_lights(rng, Vec3{0.0f, 2.0f, 0.0f}), Catch::Contains("has_lights()"));
+	CHECK_THROWS_WITH(pt.sample_area_lights(rng, Vec3{0.0f, 2.0f, 0.0f}), contains_text("has_lights()"));
 
 	scene.environment = Env_Constant{Spectrum{1.0f}};
 	CHECK(pt.has_lights());

@@ -4,7 +4,7 @@
 #include "film_stream.h"
 #include "error.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <sstream>
 
@@ -49,7 +49,7 @@ TEST_CASE("A film stream cut inside a frame, or that is not one, is an error tha
 	std::string bytes = pipe.str();
 	std::stringstream cut(bytes.substr(0, bytes.size() - 5));
 	Film_Frame frame;
-	CHECK_THROWS_WITH(read_frame(cut, frame), Catch::Contains("ended inside a frame's non-finite counts"));
+	CHECK_THROWS_WITH(read_frame(cut, frame), contains_text("ended inside a frame's non-finite counts"));
 	std::stringstream text("loaded scenes/cornell_box.json in 0.01 s\n........................................");
-	CHECK_THROWS_WITH(read_frame(text, frame), Catch::Contains("must start with \"LABF\""));
+	CHECK_THROWS_WITH(read_frame(text, frame), contains_text("must start with \"LABF\""));
 }

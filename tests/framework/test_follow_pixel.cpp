@@ -3,7 +3,7 @@
 #include "furnace_scenes.h"
 #include "lifecycle.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <sstream>
 

@@ -17,7 +17,7 @@
 #include "render.h"
 #include "scene_loader.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <filesystem>
 #include <vector>

@@ -10,7 +10,7 @@
 #include "pathtracer.h"
 #include "statistics.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>

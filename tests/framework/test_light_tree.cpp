@@ -13,7 +13,7 @@
 #include "scene_loader.h"
 #include "statistics.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>

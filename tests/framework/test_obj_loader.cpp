@@ -5,7 +5,7 @@
 #include "obj_loader.h"
 #include "temp_dir.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <fstream>
 
@@ -114,7 +114,7 @@ TEST_CASE("load_obj rejects a missing file, a file without triangles and bad ind
 	SECTION("a missing file") {
 		Temp_Dir dir;
 		std::string path = dir.file("nowhere.obj");
-		REQUIRE_THROWS_WITH(load_obj(path), Catch::StartsWith(path + ": cannot read the file"));
+		REQUIRE_THROWS_WITH(load_obj(path), starts_with_text(path + ": cannot read the file"));
 	}
 	SECTION("no faces at all") {
 		require_obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\n", "no triangles");

@@ -5,7 +5,7 @@
 #include "image_io.h"
 #include "temp_dir.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 #include <stb/stb_image.h>
 
 #include <array>

@@ -5,7 +5,7 @@
 #include "render.h"
 #include "scene_loader.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <algorithm>
 #include <cmath>
@@ -302,7 +302,7 @@ TEST_CASE("render_samples refuses a film of another size than the settings'", "[
 	Scene scene = sphere_scene();
 	Pathtracer pathtracer(scene, scene.settings, View::path);
 	Film wrong(scene.settings.width + 1, scene.settings.height);
-	CHECK_THROWS_WITH(render_samples(pathtracer, wrong, 0, 1), Catch::Contains("the film is 25 x 18"));
+	CHECK_THROWS_WITH(render_samples(pathtracer, wrong, 0, 1), contains_text("the film is 25 x 18"));
 }
 
 TEST_CASE("A progressive render hands on, batch after batch, render()'s film with that many samples", "[render]") {

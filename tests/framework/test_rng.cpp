@@ -3,7 +3,7 @@
 #include "rng.h"
 #include "statistics.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <algorithm>
 #include <array>

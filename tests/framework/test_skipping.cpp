@@ -9,7 +9,7 @@
 #include "scene_loader.h"
 #include "test_materials.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <random>

@@ -7,7 +7,7 @@
 #include "temp_dir.h"
 #include "z_heat_map.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <nlohmann/json.hpp>
 
@@ -61,7 +61,7 @@ TEST_CASE("report: a judge whose test cases did not all run is not PASS, even if
 	Temp_Dir missing, unlisted;
 	Task_Result some = task1(missing, "0", record(true, {true, true}, "", 3));
 	CHECK(some.status != Status::pass);
-	CHECK_THAT(some.why, Catch::Contains("case 2"));
+	CHECK_THAT(some.why, contains_text("case 2"));
 	std::string without_list = record(true, {true});
 	std::string list = R"("expected_test_cases": [{"id": "t1.case.0", "name": "case 0"}], )";
 	REQUIRE(without_list.find(list) != std::string::npos);
@@ -78,11 +78,11 @@ TEST_CASE("report: a crash, a time-out or a missing summary is CRASHED and shows
 	Temp_Dir segfault, timeout, killed, no_record;
 	Task_Result crashed = task1(segfault, "139", record(true, {false}, "SIGSEGV - Segmentation violation signal"));
 	CHECK(crashed.status == Status::crashed);
-	CHECK_THAT(crashed.why, Catch::Contains("SIGSEGV"));
+	CHECK_THAT(crashed.why, contains_text("SIGSEGV"));
 	CHECK(crashed.log_tail == "the grader's output\n");
 	Task_Result timed_out = task1(timeout, "124", record(true, {false}, "SIGTERM - Termination request signal"));
 	CHECK(timed_out.status == Status::crashed);
-	CHECK_THAT(timed_out.why, Catch::Contains("did not finish in time"));
+	CHECK_THAT(timed_out.why, contains_text("did not finish in time"));
 	CHECK(task1(killed, "137", record(false, {true})).status == Status::crashed);
 	CHECK(task1(no_record, "1", "").status == Status::crashed);
 }
@@ -175,17 +175,17 @@ TEST_CASE("rubric: a judge's id the rubric lacks, a rubric id the judge lacks, o
 	};
 	CHECK_NOTHROW(score(rubric, task1_ran(dir, {{"t1.a.one", "one", true}, {"t1.a.two", "two", true}})));
 	std::string new_id = message_of({{"t1.a.one", "one", true}, {"t1.a.two", "two", true}, {"t1.a.new", "new", true}});
-	CHECK_THAT(new_id, Catch::Contains("t1.a.new") && Catch::Contains("./lab rubric --update"));
+	CHECK_THAT(new_id, contains_text("t1.a.new") && contains_text("./lab rubric --update"));
 	std::string gone_id = message_of({{"t1.a.one", "one", true}});
-	CHECK_THAT(gone_id, Catch::Contains("t1.a.two") && Catch::Contains("./lab rubric --update"));
+	CHECK_THAT(gone_id, contains_text("t1.a.two") && contains_text("./lab rubric --update"));
 	std::string no_id = message_of({{"t1.a.one", "one", true}, {"t1.a.two", "two", true}, {"", "untagged", true}});
-	CHECK_THAT(no_id, Catch::Contains("\"untagged\" has no tag [id:ID]"));
+	CHECK_THAT(no_id, contains_text("\"untagged\" has no tag [id:ID]"));
 }
 
 TEST_CASE("rubric: a rubric that names test cases by title (from before the ids) is refused, with what to run") {
 	Temp_Dir dir;
 	std::string file = rubric_file(dir, R"({"name": "generate_ray: the centre of the film", "weight": 1})");
-	CHECK_THROWS_WITH(Rubric::read(file), Catch::Contains("no \"id\"") && Catch::Contains("./lab rubric --update"));
+	CHECK_THROWS_WITH(Rubric::read(file), contains_text("no \"id\"") && contains_text("./lab rubric --update"));
 }
 
 TEST_CASE("rubric --update: ids kept with their fields, new ids at weight 1, gone ids dropped and listed, "
@@ -210,9 +210,9 @@ TEST_CASE("rubric --update: ids kept with their fields, new ids at weight 1, gon
 	CHECK(cases[1] == nlohmann::json{{"id", "t1.a.kept"}, {"title", "new title"}, {"weight", 3}, {"visibility", "hidden"}});
 	CHECK(cases[2] == nlohmann::json{{"id", "t1.a.titled"}, {"title", "named by its title"}, {"weight", 0}, {"penalty", 2}});
 	REQUIRE(update.changes.size() == 2);
-	CHECK_THAT(update.changes[0], Catch::StartsWith("added t1.a.new (task 1, weight 1)") &&
-	                                  Catch::Contains("the shipped stubs pass it"));
-	CHECK_THAT(update.changes[1], Catch::StartsWith("dropped t1.a.gone (task 1, weight 5)"));
+	CHECK_THAT(update.changes[0], starts_with_text("added t1.a.new (task 1, weight 1)") &&
+	                                  contains_text("the shipped stubs pass it"));
+	CHECK_THAT(update.changes[1], starts_with_text("dropped t1.a.gone (task 1, weight 5)"));
 	// What it writes, grading reads.
 	std::ofstream(file) << update.text;
 	CHECK(Rubric::read(file).tasks.at(1).test_cases.size() == 3);

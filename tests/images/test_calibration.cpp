@@ -6,7 +6,7 @@
 // the thresholds are wrong.
 #include "graded_images.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 namespace {
 constexpr uint64_t FIRST_SEED = 100, SEEDS = 20;

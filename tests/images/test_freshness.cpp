@@ -4,7 +4,7 @@
 // or a graded scene, the change is biased or the references are stale: `./lab references`.
 #include "graded_images.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 TEST_CASE("every stored reference image matches the reference renderer within its noise", "[images]") {
 	for (const Graded_Scene& scene : graded_scenes()) {

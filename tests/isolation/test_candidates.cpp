@@ -6,7 +6,7 @@
 #include "graded_images.h"
 #include "triangle_hit_counter.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 TEST_CASE("a task 2 other than the reference decides every candidate triangle, not only the closest",
           "[framework][isolation]") {

@@ -1,6 +1,6 @@
 #include "security_grading.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 #include <nlohmann/json.hpp>
 
 #include <sys/resource.h>
@@ -154,7 +154,7 @@ void require_nothing_earned(const Grade& grade, const std::string& reason) {
 		CHECK(grade.test_cases > 0);
 		CHECK(grade.passed == 0);
 	}
-	CHECK_THAT(grade.messages, Catch::Contains(reason));
-	CHECK_THAT(grade.report, Catch::Contains(reason));
+	CHECK_THAT(grade.messages, contains_text(reason));
+	CHECK_THAT(grade.report, contains_text(reason));
 }
 

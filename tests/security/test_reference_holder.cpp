@@ -9,7 +9,7 @@
 #include "image_io.h"
 #include "security_grading.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -86,7 +86,7 @@ TEST_CASE("machine code, data run as code and framework functions of its own ear
 	CHECK_FALSE(grades[7].built);
 	for (const char* name : {"render(Pathtracer const&, Render_Options const&)", "RNG::unit()", "Film::non_finite() const",
 	                         "film_non_finite_count_is_mine"}) {
-		CHECK_THAT(grades[7].messages, Catch::Contains(name));
+		CHECK_THAT(grades[7].messages, contains_text(name));
 	}
 	require_nothing_earned(grades[7], "defines global names that are not task 7");
 }
@@ -136,7 +136,8 @@ TEST_CASE("task 4's answers replayed from the shipped reference image or read of
 	Grade in_public = grade_submission(public_dir, {{4, hostile}})[4];
 	INFO("in public: " << in_public.messages.substr(0, 2000));
 	CHECK(in_public.built);
-	CHECK_THAT(in_public.passed_names, Catch::VectorContains(std::string("the graded scene cornell_diffuse renders like its reference image")));
+	const std::string image_test = "the graded scene cornell_diffuse renders like its reference image";
+	CHECK(std::find(in_public.passed_names.begin(), in_public.passed_names.end(), image_test) != in_public.passed_names.end());
 	// Under a grading seed, nothing beyond what the honest part earns.
 	std::map<int, Grade> graded = grade_submission(hostile_dir, {{4, hostile}}, "--seed 4242");
 	std::map<int, Grade> honest_graded = grade_submission(honest_dir, {{4, honest}}, "--seed 4242");

@@ -9,7 +9,7 @@
 #include "security_grading.h"
 #include "sha256.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 #include <nlohmann/json.hpp>
 
 #include <arpa/inet.h>
@@ -82,7 +82,7 @@ TEST_CASE("a traversal that tests objects where the count cannot see earns nothi
 	CHECK(uncounted.built);
 	CHECK(uncounted.failed ==
 	      std::vector<std::string>{"BVH::hit: objects tested per ray within 1.5x of an ideal front-to-back traversal"});
-	CHECK_THAT(uncounted.messages, Catch::Contains("missed the closest hit"));
+	CHECK_THAT(uncounted.messages, contains_text("missed the closest hit"));
 }
 
 TEST_CASE("rewriting the reference images or test data earns nothing and changes nothing", "[security]") {
@@ -225,7 +225,7 @@ TEST_CASE("an answer that declares a huge payload and sends nothing costs the ju
 TEST_CASE("a file whose preprocessing never ends is stopped, and says so", "[security]") {
 	Grade bomb = grade("task1_macro_bomb.cpp", 1);
 	CHECK_FALSE(bomb.built);
-	CHECK_THAT(bomb.messages, Catch::Contains("memory") || Catch::Contains("did not finish"));
+	CHECK_THAT(bomb.messages, contains_text("memory") || contains_text("did not finish"));
 }
 
 namespace {
@@ -261,8 +261,8 @@ TEST_CASE("a submission whose every function hangs gets 0 on every task, at most
 		CHECK(graded.built);
 		CHECK(graded.test_cases > 0);
 		CHECK(graded.passed == 0);
-		CHECK_THAT(graded.messages, Catch::Contains("first: it did not finish") ||
-		                                Catch::Contains("first: your code did not finish"));
+		CHECK_THAT(graded.messages, contains_text("first: it did not finish") ||
+		                                contains_text("first: your code did not finish"));
 	}
 	// A task waits for at most two hung requests (grading/judge/subject.h, Hang_Record); compiling,
 	// starting subjects and the judge's own work take the rest, a few seconds a task. With the
@@ -278,7 +278,7 @@ TEST_CASE("a file that keeps the compiler busy is stopped by the time limit, and
 	Grade busy = grade("task1_endless_constexpr.cpp", 1);
 	unsetenv("LAB_STEP_SECONDS");
 	CHECK_FALSE(busy.built);
-	CHECK_THAT(busy.messages, Catch::Contains("did not finish in 2 s"));
+	CHECK_THAT(busy.messages, contains_text("did not finish in 2 s"));
 }
 
 TEST_CASE("a task-4 file whose shade() is the framework's NEE integrator earns nothing for shade()", "[security]") {
@@ -297,5 +297,5 @@ TEST_CASE("a task-4 file whose shade() is the framework's NEE integrator earns n
 	CHECK(hostile.built);
 	CHECK(bsdf_only.passed > 0);
 	CHECK(hostile.passed <= bsdf_only.passed);
-	CHECK_THAT(hostile.messages, Catch::Contains("not part of a program built with your task 4"));
+	CHECK_THAT(hostile.messages, contains_text("not part of a program built with your task 4"));
 }

@@ -6,7 +6,7 @@
 #include "stress_count.h"
 #include "stress_meshes.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -14,7 +14,7 @@
 #include "statistics.h"
 #include "temp_dir.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 #include <nlohmann/json.hpp>
 
 #include <fstream>

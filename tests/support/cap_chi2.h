@@ -19,7 +19,7 @@
 //   the end add (area * spread of the integrand) to an error bound. Probes can miss the sharp tip
 //   of a polygon's corner, so pieces that contain a given corner direction are split as well.
 //   Cells above a silhouette are smooth by construction and never split.
-#include "math.h"
+#include "vec_math.h"
 #include "rng.h"
 #include "statistics.h"
 

@@ -1,6 +1,6 @@
 #include "film_statistics.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <cmath>
 #include <sstream>

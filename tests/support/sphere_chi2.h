@@ -10,7 +10,7 @@
 // pdf of the form f(theta, phi) / sin(theta) with f constant on the cell, so choose the grid of an
 // environment-map test as a refinement of the map's texel grid (cells never straddle a texel), and
 // use a few points per cell for smooth densities.
-#include "math.h"
+#include "vec_math.h"
 #include "rng.h"
 #include "statistics.h"
 

@@ -8,7 +8,7 @@
 #include "scene_loader.h"
 #include "z_heat_map.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <optional>
 #include <sstream>

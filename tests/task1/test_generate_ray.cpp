@@ -4,7 +4,7 @@
 #include "judge.h"
 #include "rng.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

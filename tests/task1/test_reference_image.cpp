@@ -4,7 +4,7 @@
 // of both (framework/film/image_compare.h); scenes/graded/references/ holds the reference.
 #include "student_renders.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 TEST_CASE("the graded scene eye_bunny renders like its reference image",
           "[id:t1.image.eye-bunny][estimate][task1][image][statistical][uses:generate_ray][uses:trace_pixel]") {

@@ -8,7 +8,7 @@
 #include "pathtracer.h"
 #include "statistics.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <algorithm>
 #include <sstream>

@@ -12,7 +12,7 @@
 #include "shape_check.h"
 #include "student_shapes.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <cmath>
 #include <sstream>
@@ -108,7 +108,7 @@ TEST_CASE("Triangle::hit agrees with the exact answer on 10^5 random rays", "[id
 	Tally tally;
 	for (size_t i = 0; i < queries.size(); i++) {
 		const auto& [tri, ray] = queries[i];
-		auto shape = [&] {
+		auto shape = [&tri = tri] { // (C++17 lambdas capture a structured binding only this way)
 			return "triangle " + show(tri.v0.position) + ", " + show(tri.v1.position) + ", " + show(tri.v2.position);
 		};
 		tally.add(expect_hit(tri, ray), got[i], ray, shape, "handout §2.1");
@@ -138,7 +138,7 @@ TEST_CASE("Sphere::hit agrees with the exact answer on 10^5 random rays", "[id:t
 	Tally tally;
 	for (size_t i = 0; i < queries.size(); i++) {
 		const auto& [sphere, ray] = queries[i];
-		auto shape = [&] {
+		auto shape = [&sphere = sphere] {
 			std::ostringstream out;
 			out.precision(9);
 			out << "sphere of radius " << sphere.radius;

@@ -10,7 +10,7 @@
 #include "shape_check.h"
 #include "student_shapes.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -6,7 +6,7 @@
 #include "shape_check.h"
 #include "student_shapes.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <cmath>
 #include <functional>

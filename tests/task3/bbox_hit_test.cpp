@@ -5,7 +5,7 @@
 #include "bbox.h"
 #include "judge.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <cmath>
 #include <vector>

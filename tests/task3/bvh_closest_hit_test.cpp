@@ -4,7 +4,7 @@
 #include "bvh_test_scenes.h"
 #include "judge.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 using protocol::BVH_Triangles;
 

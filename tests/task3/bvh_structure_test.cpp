@@ -5,7 +5,7 @@
 #include "judge.h"
 #include "tree_check.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <algorithm>
 #include <cstring>

@@ -6,7 +6,7 @@
 #include "judge.h"
 #include "student_renders.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 TEST_CASE("the graded scene eye_bunny renders through the BVH like its reference image",
           "[id:t3.image.eye-bunny][task3][image][statistical][uses:BBox::hit][uses:BVH::build][uses:BVH::hit]") {

@@ -19,7 +19,7 @@
 #include "student_furnaces.h"
 #include "student_secret_inputs.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <cmath>
 #include <optional>

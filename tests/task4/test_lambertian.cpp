@@ -12,7 +12,7 @@
 #include "student_overlapped.h"
 #include "student_secret_inputs.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <array>
 #include <cmath>

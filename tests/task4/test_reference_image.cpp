@@ -4,7 +4,7 @@
 // of both (framework/film/image_compare.h); scenes/graded/references/ holds the reference.
 #include "student_renders.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 TEST_CASE("the graded scene cornell_diffuse renders like its reference image",
           "[id:t4.image.cornell-diffuse][estimate][task4][image][statistical][uses:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {

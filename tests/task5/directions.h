@@ -1,6 +1,6 @@
 #pragma once
 // Directions, angles and printing shared by the task-5 tests.
-#include "math.h"
+#include "vec_math.h"
 #include "rng.h"
 
 #include <glm/glm.hpp>

@@ -5,7 +5,7 @@
 // of both (framework/film/image_compare.h); scenes/graded/references/ holds the reference.
 #include "student_renders.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 TEST_CASE("the graded scene glass_balls renders like its reference image",
           "[id:t5.image.glass-balls][estimate][task5][image][statistical][uses:Mirror::scatter][uses:Glass::scatter]") {

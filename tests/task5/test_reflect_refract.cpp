@@ -9,7 +9,7 @@
 #include "material.h"
 #include "student_secret_inputs.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <cmath>
 #include <string>

@@ -20,7 +20,7 @@
 #include "light_scenes.h"
 #include "task6_inputs.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>

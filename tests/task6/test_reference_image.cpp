@@ -5,7 +5,7 @@
 #include "grader_significance.h"
 #include "student_renders.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 TEST_CASE("the graded scene cornell_small_light renders like its reference image",
           "[id:t6.image.cornell-small-light][estimate][task6][image][statistical][uses:sample_incoming]") {

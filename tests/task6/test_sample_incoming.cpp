@@ -11,7 +11,7 @@
 #include "light_scenes.h"
 #include "task6_inputs.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <cmath>
 #include <sstream>

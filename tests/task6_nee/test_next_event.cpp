@@ -21,7 +21,7 @@
 #include "student_calls.h"
 #include "student_renders.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>

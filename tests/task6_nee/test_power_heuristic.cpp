@@ -1,7 +1,7 @@
 // Grader of task 6's optional extension, part 1: power_heuristic (handout §6.5).
 #include "student_calls.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <cmath>
 

@@ -3,7 +3,7 @@
 // around its centre, into all eight neighbours; the pdf must cover that, and nothing far beyond.
 #include "env_test_support.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <future>
 #include <vector>

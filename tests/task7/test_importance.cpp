@@ -4,7 +4,7 @@
 #include "sphere_chi2.h"
 #include "student_overlapped.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <future>
 #include <iterator>
@@ -126,7 +126,7 @@ TEST_CASE("Image: a texel's probability is proportional to luminance * sin(theta
 		}
 	}
 	INFO("the probability of a texel must be proportional to its luminance (0.2126 r + 0.7152 g + 0.0722 b, "
-	     "luminance() in math.h) times sin(theta) of its row: the flux through it (handout §7.4). "
+	     "luminance() in vec_math.h) times sin(theta) of its row: the flux through it (handout §7.4). "
 	     << bad << " texels off by more than 1 %; first: " << first);
 	CHECK(bad == 0);
 }

@@ -1,7 +1,7 @@
 // Task 7 grader, handout §7.1: the equirectangular mapping between directions and uv.
 #include "env_test_support.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 using namespace env_test;
 

@@ -2,7 +2,7 @@
 // never produce NaN or infinity.
 #include "env_test_support.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 using namespace env_test;
 

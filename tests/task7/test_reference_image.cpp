@@ -4,7 +4,7 @@
 // of both (framework/film/image_compare.h); scenes/graded/references/ holds the reference.
 #include "student_renders.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 TEST_CASE("the graded scene env_overcast renders like its reference image",
           "[id:t7.image.env-overcast][estimate][task7][image][statistical][uses:Env_Map::sample][uses:Env_Map::pdf][uses:Env_Map::evaluate]") {

@@ -8,7 +8,7 @@
 #include "furnace_scenes.h"
 #include "student_furnaces.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 #include <optional>
 

@@ -3,7 +3,7 @@
 #include "env_test_support.h"
 #include "sphere_chi2.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 
 using namespace env_test;
 

@@ -7,7 +7,7 @@
 #include "image_io.h"
 #include "viewer_server.h"
 
-#include <catch2/catch.hpp>
+#include "lab_catch2.h"
 #include <httplib.h>
 
 #include <chrono>
@@ -147,7 +147,7 @@ TEST_CASE("A malformed request gets a 4xx answer that names what was expected", 
 		auto result = c.method == "GET" ? viewer.get(c.path) : viewer.post(c.path);
 		REQUIRE(result);
 		CHECK(result->status == c.status);
-		CHECK_THAT(error_of(result), Catch::Contains(c.says));
+		CHECK_THAT(error_of(result), contains_text(c.says));
 	}
 	CHECK(viewer.get("/api/state")->status == 200); // and the viewer goes on
 }
@@ -162,7 +162,7 @@ TEST_CASE("No path from the browser reaches beyond the scene's folder and the ou
 		INFO("scene=" << scene);
 		auto result = viewer.post("/api/restart?scene=" + scene);
 		CHECK(result->status == 400);
-		CHECK_THAT(error_of(result), Catch::Contains("expected the name of a .json file in"));
+		CHECK_THAT(error_of(result), contains_text("expected the name of a .json file in"));
 	}
 	auto missing = viewer.post("/api/restart?scene=missing.json");
 	CHECK(missing->status == 404);
@@ -170,7 +170,7 @@ TEST_CASE("No path from the browser reaches beyond the scene's folder and the ou
 		INFO("name=" << name);
 		auto result = viewer.post("/api/snapshot?side=reference&name=" + name);
 		CHECK(result->status == 400);
-		CHECK_THAT(error_of(result), Catch::Contains("expected a file name ending in .png"));
+		CHECK_THAT(error_of(result), contains_text("expected a file name ending in .png"));
 	}
 	CHECK_FALSE(fs::exists(dir / "escaped.png"));
 	auto written = viewer.post("/api/snapshot?side=reference&name=picture.png");
@@ -209,7 +209,7 @@ TEST_CASE("The z-map and the verdict are the graders': a black render fails, too
 	for (int i = 0; i < 500 && !(comparison = viewer.session.state()["comparison"]).is_object(); i++) std::this_thread::sleep_for(10ms);
 	REQUIRE(comparison.is_object());
 	CHECK(comparison["pass"] == false);
-	CHECK_THAT(comparison["message"].get<std::string>(), Catch::Contains("the render is too dark there"));
+	CHECK_THAT(comparison["message"].get<std::string>(), contains_text("the render is too dark there"));
 	auto z = viewer.get("/api/image?side=student&layer=z");
 	REQUIRE(z->status == 200);
 	REQUIRE(z->body.size() == 32 * 32 * 3);
@@ -252,7 +252,7 @@ TEST_CASE("A grader run from the page sends its lines and its exit status; one r
 	CHECK(started->status == 202);
 	auto second = viewer.post("/api/grade?task=5");
 	CHECK(second->status == 409);
-	CHECK_THAT(error_of(second), Catch::Contains("the grader of task 4 is still running"));
+	CHECK_THAT(error_of(second), contains_text("the grader of task 4 is still running"));
 	std::vector<std::string> lines;
 	nlohmann::json graded;
 	std::string event;
@@ -281,7 +281,7 @@ TEST_CASE("A renderer that crashes is shown as failed with its last words, and t
 		std::this_thread::sleep_for(10ms);
 	}
 	CHECK(student["state"] == "failed");
-	CHECK_THAT(student["message"].get<std::string>(), Catch::Contains("in Triangle::hit") && Catch::Contains("killed by signal 11"));
+	CHECK_THAT(student["message"].get<std::string>(), contains_text("in Triangle::hit") && contains_text("killed by signal 11"));
 	viewer.wait_for_samples("reference", 1); // the other side renders on
 	CHECK(viewer.get("/api/image?side=student&layer=mean")->status == 409);
 }

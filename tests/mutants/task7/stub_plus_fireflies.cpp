@@ -50,7 +50,7 @@ float Uniform::pdf(Vec3 dir) const {
 
 Image::Image(const HDR_Image& image) {
 	// TODO (Task 7, handout §7.4): set w and h, and fill pdf_texel and cdf (index j * w + i).
-	// - A texel's weight is the flux through it: luminance (math.h) times sin(theta) of its row.
+	// - A texel's weight is the flux through it: luminance (vec_math.h) times sin(theta) of its row.
 	// - The pdf must be non-zero wherever evaluate() is: take the luminance from the texel's 3 x 3
 	//   neighbourhood, as the bilinear lookup does (the handout gives two ways).
 	// - Normalize by the total (sum in double), so cdf.back() is 1. A black image has total 0.
