@@ -119,10 +119,12 @@ std::vector<std::string> Viewer_Session::renderer_arguments(Side s) const {
 	// another with other noise (its default, next-event estimation, has far lighter tails than task
 	// 4's path tracer, whose pixels at a few hundred samples have rarely met a small light yet: the
 	// z-test would blame correct code). The student's renderer runs task 4's path tracer with task
-	// 6's sample_incoming, which samples the lights only once task 6 is done.
-	if (s == Side::reference && config.compare) {
+	// 6's sample_incoming, which samples the lights only once task 6 is done. Both sides say so, so that
+	// a student renderer whose default is another estimator (the reference's, in a test) is compared
+	// alike.
+	if (config.compare) {
 		args.insert(args.end(), {"--integrator", "mixture"});
-		if (!student_samples_lights) args.push_back("--no-light-sampling");
+		if (s == Side::reference && !student_samples_lights) args.push_back("--no-light-sampling");
 	}
 	return args;
 }
@@ -139,7 +141,8 @@ bool Viewer_Session::student_samples_lights_now() const {
 	}
 	for (const char* pixel : {"16,16", "8,24", "24,24"}) {
 		std::vector<std::string> args{config.student_renderer, scene_now, "--width", "32", "--height", "32",
-		                              "--view", "path", "--seed", seed_now, "--follow-pixel", pixel,
+		                              "--view", "path", "--integrator", "mixture", "--seed", seed_now,
+		                              "--follow-pixel", pixel,
 		                              "--follow-format", "json", "--follow-samples", "32"};
 		std::string out, err;
 		if (run_program(args, out, err) != 0) return true;

@@ -31,7 +31,8 @@ RNG case_generator(const std::string& what);
 // The generator that varies a graded scene (tests/support/graded_variation.h): case_generator's,
 // but for the tests of the graders themselves, where LAB_SCENE_VARIATIONS=N in the judge's
 // environment draws from the secret seed modulo N, so that the references of N varied scenes serve
-// a run over many seeds (tests/variants/grade_variants.sh). Grading never sets it.
+// a run over many seeds (the instructors' runs of correct variants over 100 seeds). Grading never
+// sets it.
 RNG scene_generator(const std::string& what);
 
 const Sandbox& sandbox();

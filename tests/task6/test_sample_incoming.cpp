@@ -148,7 +148,8 @@ TEST_CASE("discrete BSDFs are sampled as they are, without light sampling", "[id
 			INFO("sample " << i << ": a mirror's sample must be its BSDF sample, marked discrete: direction "
 			               << describe(s.direction) << " (expected " << describe(reflection) << "), attenuation "
 			               << describe(s.attenuation) << " (expected " << describe(expected.attenuation)
-			               << "), discrete " << s.discrete << ". Check bsdf.is_discrete() first (handout §6.2)");
+			               << "), discrete " << s.discrete
+			               << ". sample_incoming must check bsdf.is_discrete() first (handout §6.2)");
 			REQUIRE(s.discrete);
 			REQUIRE(glm::length(s.direction - reflection) <= 1e-5f);
 			REQUIRE(glm::length(s.attenuation - expected.attenuation) <= 1e-6f);
