@@ -14,11 +14,14 @@
 //     constructor, destructor, copy;
 //   - pragmas but for diagnostics, packing and loop hints (#pragma weak and redefine_extname rename
 //     symbols).
+//   - line directives (#line, or GCC's "# N file" markers) in the file itself: they would make its
+//     own lines look like a header's, whose lines are not checked (so SOURCE is read too).
 // Exits 0 when nothing is refused, 1 after listing what is (on stderr), 2 on a usage error.
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <algorithm>
 #include <set>
 #include <sstream>
 #include <string>
@@ -106,6 +109,7 @@ public:
 
 	std::vector<Token> tokens;
 	std::vector<std::pair<size_t, std::string>> pragmas; // line, text after "#pragma"
+	bool saw_source = false; // a line marker named the source
 
 private:
 	static bool is_literal_prefix(const std::string& word) {
@@ -130,6 +134,7 @@ private:
 			size_t quote = content.find('"'), last = content.rfind('"');
 			std::string file = quote != std::string::npos && last > quote ? content.substr(quote + 1, last - quote - 1) : "";
 			in_source = file == source;
+			saw_source = saw_source || in_source;
 			line = std::stoul(first) - 1; // the next line is number `first`
 			return;
 		}
@@ -185,6 +190,64 @@ struct Refusal {
 	std::string what;
 };
 
+// The source's text as the preprocessor reads its directives (C++ translation phases 2 and 3):
+// backslash-newlines spliced, comments replaced by a space, string and character literals kept
+// whole; a spliced line keeps its newline count at its end, so that line numbers stay right.
+std::string without_comments(const std::string& text) {
+	std::string spliced, out;
+	size_t pending = 0; // newlines removed by splicing, put back at the end of the logical line
+	for (size_t i = 0; i < text.size(); i++) {
+		if (text[i] == '\\' && i + 1 < text.size() && text[i + 1] == '\n') {
+			pending++, i++;
+			continue;
+		}
+		spliced += text[i];
+		if (text[i] == '\n') spliced.append(pending, '\n'), pending = 0;
+	}
+	for (size_t i = 0; i < spliced.size(); i++) {
+		char c = spliced[i];
+		if (c == '/' && i + 1 < spliced.size() && spliced[i + 1] == '/') {
+			while (i < spliced.size() && spliced[i] != '\n') i++;
+			out += '\n';
+		} else if (c == '/' && i + 1 < spliced.size() && spliced[i + 1] == '*') {
+			size_t end = spliced.find("*/", i + 2);
+			end = end == std::string::npos ? spliced.size() : end + 2;
+			for (size_t k = i; k < end; k++) if (spliced[k] == '\n') out += '\n';
+			out += ' ';
+			i = end - 1;
+		} else if (c == '"' || c == '\'') {
+			size_t k = i + 1;
+			while (k < spliced.size() && spliced[k] != c && spliced[k] != '\n') k += spliced[k] == '\\' ? 2 : 1;
+			out += spliced.substr(i, std::min(k + 1, spliced.size()) - i);
+			i = k;
+		} else {
+			out += c;
+		}
+	}
+	return out;
+}
+
+// The line directives of the source itself: a line whose first token is # (or %:) and whose next is
+// a number or `line`.
+void check_line_directives(const std::string& source_text, std::vector<Refusal>& refused) {
+	std::istringstream lines(without_comments(source_text));
+	size_t number = 0;
+	for (std::string line; std::getline(lines, line);) {
+		number++;
+		size_t at = line.find_first_not_of(" \t\f\v\r");
+		if (at == std::string::npos) continue;
+		if (line.compare(at, 1, "#") == 0) at += 1;
+		else if (line.compare(at, 2, "%:") == 0) at += 2;
+		else continue;
+		at = line.find_first_not_of(" \t\f\v\r", at);
+		if (at == std::string::npos) continue;
+		if ((line[at] >= '0' && line[at] <= '9') ||
+		    (line.compare(at, 4, "line") == 0 && (at + 4 == line.size() || !is_identifier_char(line[at + 4])))) {
+			refused.push_back({number, "a line directive, which would make the lines after it look like another file's"});
+		}
+	}
+}
+
 // The attribute-specifier opened at tokens[i] (the "(" after __attribute__, or the first "[" of
 // "[["): every attribute name in it is checked, up to the bracket that closes it.
 void check_attribute(const std::vector<Token>& tokens, size_t i, std::vector<Refusal>& refused) {
@@ -202,22 +265,34 @@ void check_attribute(const std::vector<Token>& tokens, size_t i, std::vector<Ref
 
 } // namespace
 
+std::string read_whole(const char* path, bool& ok) {
+	std::ifstream in(path, std::ios::binary);
+	ok = bool(in);
+	return std::string((std::istreambuf_iterator<char>(in)), {});
+}
+
 int main(int argc, char** argv) {
 	if (argc != 3) {
 		std::cerr << "usage: lab_source_check PREPROCESSED.ii SOURCE\n";
 		return 2;
 	}
-	std::ifstream in(argv[1], std::ios::binary);
-	if (!in) {
-		std::cerr << "lab_source_check: cannot read " << argv[1] << "\n";
+	bool preprocessed_ok = false, source_ok = false;
+	std::string text = read_whole(argv[1], preprocessed_ok), source_text = read_whole(argv[2], source_ok);
+	if (!preprocessed_ok || !source_ok) {
+		std::cerr << "lab_source_check: cannot read " << (preprocessed_ok ? argv[2] : argv[1]) << "\n";
 		return 2;
 	}
-	std::string text((std::istreambuf_iterator<char>(in)), {});
 	std::string source = argv[2];
 	Reader reader(text, source);
 	reader.read();
+	if (!reader.saw_source) {
+		// Never a pass by default: the preprocessed text names its source as the compile was given it.
+		std::cerr << "lab_source_check: " << argv[1] << " has no line of " << source << "\n";
+		return 2;
+	}
 
 	std::vector<Refusal> refused;
+	check_line_directives(source_text, refused);
 	const std::vector<Token>& tokens = reader.tokens;
 	for (size_t i = 0; i < tokens.size(); i++) {
 		const Token& t = tokens[i];
@@ -245,7 +320,7 @@ int main(int argc, char** argv) {
 	for (const Refusal& r : refused) std::cerr << source << ":" << r.line << ": refused: " << r.what << "\n";
 	if (!refused.empty()) {
 		std::cerr << source << ": a task file must be C++ that the compiler translates: no assembly, no attributes that "
-		                       "place code or name symbols, no pragmas but diagnostics"
+		                       "place code or name symbols, no pragmas but diagnostics, no line directives"
 		          << "\n";
 		return 1;
 	}

@@ -166,6 +166,12 @@ TEST_CASE("a task file that has the assembler read the reference (.incbin) earns
 	require_nothing_earned(included, "assembly");
 }
 
+TEST_CASE("assembly behind line directives that call it a system header's earns nothing", "[security]") {
+	Grade hidden = grade("task3_line_directive.cpp", 3);
+	CHECK_FALSE(hidden.built);
+	require_nothing_earned(hidden, "line directive");
+}
+
 // The task1_if_* files are task 1 done right when their attack works (correct_task1_if.inc).
 TEST_CASE("a task1_if_* file whose attack works earns full marks", "[security]") {
 	// The control: without it, "earns nothing" below would prove nothing about the attacks.
