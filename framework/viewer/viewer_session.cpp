@@ -95,13 +95,23 @@ Viewer_Session::~Viewer_Session() {
 }
 
 void Viewer_Session::start() {
-	start_side(Side::reference);
-	if (!config.compare) return;
+	if (!config.compare) {
+		start_side(Side::reference);
+		return;
+	}
 	comparer = std::thread([this] { compare_when_asked(); });
 	if (config.rebuild_command.empty()) {
+		// The student's renderer is built: its estimator decides the reference's before either
+		// starts, so that the reference's first pictures are not thrown away a moment later.
+		bool samples_lights = student_samples_lights_now();
+		{
+			std::lock_guard<std::mutex> lock(mutex);
+			student_samples_lights = samples_lights;
+		}
+		start_side(Side::reference);
 		start_side(Side::student);
-		builder = std::thread([this] { match_reference_estimator(); });
 	} else {
+		start_side(Side::reference); // while the student's code builds; matched once it has
 		builder = std::thread([this] { rebuild_student(); });
 	}
 	if (!config.student_dir.empty()) watcher = std::thread([this] { watch_student_files(); });
