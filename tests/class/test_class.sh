@@ -3,7 +3,7 @@
 # by ./lab grade-class with two workers must score as expected (check_gradebook.sh); a rerun resumes
 # (nothing is graded again, the gradebook is the same); a submission graded again gets the same
 # scores and messages. Leaves the class and its gradebook (OUT/gradebook.csv) for the GNU parallel
-# and Slurm tests (ctest fixtures "class_graded", "class_full_graded").
+# and Slurm tests (the small class's: ctest fixture "class_graded").
 #   test_class.sh REPOSITORY_ROOT KIT OUT small|full MUTANTS
 # MUTANTS: the mutants' sources, made at configure time (BUILD/mutants, tests/mutants/README.md).
 set -euo pipefail
