@@ -2,10 +2,9 @@
 // (issue 35; DESIGN.md, decided points 6 to 8): the compiled reference of all seven tasks, the
 // reference images of the graded scenes and the framework's headers. Each hostile file must earn
 // nothing beyond its honest part in every sandbox mode (the ctest tests security*, by LAB_SANDBOX).
-// Tagged [whole]: with LAB_SECURITY_WHOLE=1 (./lab acceptance, in every mode) each submission is
-// graded as Gradescope grades one, all seven tasks in order into one output folder, the tasks without
-// a hostile file being the shipped stubs; otherwise (./lab test) only its hostile files' tasks are
-// graded, in order, into one folder.
+// Tagged [whole]: each submission is graded as Gradescope grades one, all seven tasks in order into
+// one output folder, the tasks without a hostile file being the shipped stubs (./lab acceptance, in
+// every mode: the ctest tests security*_whole).
 #include "image_io.h"
 #include "security_grading.h"
 
@@ -19,20 +18,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool graded_whole() {
-	const char* whole = std::getenv("LAB_SECURITY_WHOLE");
-	return whole && std::string(whole) == "1";
-}
-
-// Grades a submission of `files` (see above): all seven tasks, or the files' own; `options` go to
-// grade-submission. Every task graded was, and where it had no hostile file (the shipped stubs) it
-// earned no points (the stubs pass a few test cases, which the rubric weighs 0).
+// Grades a submission of `files` (see above), all seven tasks; `options` go to grade-submission.
+// Every task graded was, and where it had no hostile file (the shipped stubs) it earned no points (the stubs pass a few test cases, which the rubric weighs 0).
 std::map<int, Grade> grade_submission(const Temp_Dir& dir, const std::map<int, std::string>& files,
                                       const std::string& options = "") {
-	std::string tasks;
-	for (const auto& [task, text] : files) tasks += (tasks.empty() ? "" : ",") + std::to_string(task);
-	std::map<int, Grade> grades = grade_files(dir, files, options + (graded_whole() ? "" : " --tasks " + tasks));
-	REQUIRE(grades.size() == (graded_whole() ? 7 : files.size()));
+	std::map<int, Grade> grades = grade_files(dir, files, options);
+	REQUIRE(grades.size() == 7);
 	for (const auto& [task, graded] : grades) {
 		if (files.count(task)) continue;
 		INFO("task " << task << " (the shipped stub)");
