@@ -1,8 +1,11 @@
 #include "child_process.h"
 
+#include <chrono>
+#include <condition_variable>
 #include <csignal>
 #include <cstring>
 #include <fcntl.h>
+#include <mutex>
 #include <poll.h>
 #include <stdexcept>
 #include <sys/wait.h>
@@ -92,11 +95,30 @@ std::string read_all(int fd) {
 	return text;
 }
 
-int run_program(const std::vector<std::string>& argv, std::string& out, std::string& err) {
+int run_program(const std::vector<std::string>& argv, std::string& out, std::string& err, double seconds) {
 	Child_Process child(argv, false);
+	// A watch that stops the program at its time limit: its pipes then close and the reads end.
+	std::mutex mutex;
+	std::condition_variable read;
+	bool done = false;
+	std::thread watch;
+	if (seconds > 0) {
+		watch = std::thread([&] {
+			std::unique_lock<std::mutex> lock(mutex);
+			if (!read.wait_for(lock, std::chrono::duration<double>(seconds), [&] { return done; })) child.kill();
+		});
+	}
 	// Both pipes at once, or a program that fills one while the other is read would wait forever.
 	std::thread error_reader([&] { err = read_all(child.error_fd()); });
 	out = read_all(child.output_fd());
 	error_reader.join();
+	if (watch.joinable()) {
+		{
+			std::lock_guard<std::mutex> lock(mutex);
+			done = true;
+		}
+		read.notify_one();
+		watch.join();
+	}
 	return child.wait();
 }

@@ -39,5 +39,5 @@ private:
 std::string read_all(int fd);
 
 // Runs a program to its end and returns its exit status, with its standard output in `out` and its
-// standard error in `err`.
-int run_program(const std::vector<std::string>& argv, std::string& out, std::string& err);
+// standard error in `err`. With `seconds` > 0 it is stopped (SIGKILL, status 137) when it runs longer.
+int run_program(const std::vector<std::string>& argv, std::string& out, std::string& err, double seconds = 0);

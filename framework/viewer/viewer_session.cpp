@@ -142,8 +142,8 @@ std::vector<std::string> Viewer_Session::renderer_arguments(Side s) const {
 bool Viewer_Session::student_samples_lights_now() const {
 	// A few paths of three pixels of a small film: with a finished task 6, the first diffuse hit of
 	// a path samples the lights with probability 1/2, so 3 x 32 paths all miss it with probability
-	// 2^-96 where a diffuse surface is seen. A renderer that cannot follow (it crashes) keeps the
-	// finished estimator.
+	// 2^-96 where a diffuse surface is seen. A renderer that cannot follow (it crashes, or hangs:
+	// each run has 10 seconds) keeps the finished estimator.
 	std::string scene_now, seed_now;
 	{
 		std::lock_guard<std::mutex> lock(mutex);
@@ -155,7 +155,7 @@ bool Viewer_Session::student_samples_lights_now() const {
 		                              "--follow-pixel", pixel,
 		                              "--follow-format", "json", "--follow-samples", "32"};
 		std::string out, err;
-		if (run_program(args, out, err) != 0) return true;
+		if (run_program(args, out, err, 10) != 0) return true;
 		if (out.find("\"light_sample\"") != std::string::npos) return true;
 	}
 	return false;

@@ -285,3 +285,19 @@ TEST_CASE("A renderer that crashes is shown as failed with its last words, and t
 	viewer.wait_for_samples("reference", 1); // the other side renders on
 	CHECK(viewer.get("/api/image?side=student&layer=mean")->status == 409);
 }
+
+TEST_CASE("A student renderer that hangs does not hold up the viewer: its estimator probe stops at 10 s",
+          "[viewer]") {
+	fs::path dir = scratch_folder("hanging");
+	fs::path hanging = dir / "hanging_renderer";
+	std::ofstream(hanging) << "#!/bin/sh\nexec sleep 600\n";
+	fs::permissions(hanging, fs::perms::owner_all);
+	Viewer_Config config = config_in(dir, 2);
+	config.student_renderer = hanging.string();
+	auto start = std::chrono::steady_clock::now();
+	Running_Viewer viewer(config);
+	double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+	INFO("the viewer started in " << seconds << " s");
+	CHECK(seconds < 30); // 10 s for the probe, the rest for a loaded machine
+	viewer.wait_for_samples("reference", 1);
+}
