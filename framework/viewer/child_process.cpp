@@ -99,13 +99,13 @@ int run_program(const std::vector<std::string>& argv, std::string& out, std::str
 	Child_Process child(argv, false);
 	// A watch that stops the program at its time limit: its pipes then close and the reads end.
 	std::mutex mutex;
-	std::condition_variable read;
+	std::condition_variable finished;
 	bool done = false;
 	std::thread watch;
 	if (seconds > 0) {
 		watch = std::thread([&] {
 			std::unique_lock<std::mutex> lock(mutex);
-			if (!read.wait_for(lock, std::chrono::duration<double>(seconds), [&] { return done; })) child.kill();
+			if (!finished.wait_for(lock, std::chrono::duration<double>(seconds), [&] { return done; })) child.kill();
 		});
 	}
 	// Both pipes at once, or a program that fills one while the other is read would wait forever.
@@ -117,7 +117,7 @@ int run_program(const std::vector<std::string>& argv, std::string& out, std::str
 			std::lock_guard<std::mutex> lock(mutex);
 			done = true;
 		}
-		read.notify_one();
+		finished.notify_one();
 		watch.join();
 	}
 	return child.wait();

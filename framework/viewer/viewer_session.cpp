@@ -103,11 +103,7 @@ void Viewer_Session::start() {
 	if (config.rebuild_command.empty()) {
 		// The student's renderer is built: its estimator decides the reference's before either
 		// starts, so that the reference's first pictures are not thrown away a moment later.
-		bool samples_lights = student_samples_lights_now();
-		{
-			std::lock_guard<std::mutex> lock(mutex);
-			student_samples_lights = samples_lights;
-		}
+		probe_student_estimator();
 		start_side(Side::reference);
 		start_side(Side::student);
 	} else {
@@ -161,13 +157,19 @@ bool Viewer_Session::student_samples_lights_now() const {
 	return false;
 }
 
-void Viewer_Session::match_reference_estimator() {
-	if (!config.compare) return;
+bool Viewer_Session::probe_student_estimator() {
 	bool samples_lights = student_samples_lights_now();
+	std::lock_guard<std::mutex> lock(mutex);
+	bool changed = samples_lights != student_samples_lights;
+	student_samples_lights = samples_lights;
+	return changed;
+}
+
+void Viewer_Session::match_reference_estimator() {
+	if (!config.compare || !probe_student_estimator()) return;
 	{
 		std::lock_guard<std::mutex> lock(mutex);
-		if (samples_lights == student_samples_lights || stopping) return;
-		student_samples_lights = samples_lights;
+		if (stopping) return;
 	}
 	start_side(Side::reference); // the same seed and samples, now the student's estimator
 	publish_state();
@@ -327,11 +329,7 @@ void Viewer_Session::restart(const Restart& changes) {
 		student_buildable = build_state != "failed" && build_state != "building";
 		comparison.reset();
 	}
-	if (probe && student_buildable) {
-		bool samples_lights = student_samples_lights_now();
-		std::lock_guard<std::mutex> lock(mutex);
-		student_samples_lights = samples_lights;
-	}
+	if (probe && student_buildable) probe_student_estimator();
 	publish_state();
 	start_side(Side::reference);
 	if (config.compare && student_buildable) start_side(Side::student);

@@ -117,6 +117,7 @@ private:
 	// sample_incoming calls sample_area_lights), found by following a few of its paths; the
 	// reference then renders the same estimator (match_reference_estimator).
 	bool student_samples_lights_now() const;
+	bool probe_student_estimator(); // probes and keeps the answer: true when it changed
 	void match_reference_estimator();
 	void start_side(Side side);
 	std::unique_ptr<Render_Process> stop_side(Side side); // to destroy outside the lock

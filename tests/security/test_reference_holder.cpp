@@ -4,7 +4,7 @@
 // nothing beyond its honest part in every sandbox mode (the ctest tests security*, by LAB_SANDBOX).
 // Tagged [whole]: each submission is graded as Gradescope grades one, all seven tasks in order into
 // one output folder, the tasks without a hostile file being the shipped stubs (./lab acceptance, in
-// every mode: the ctest tests security*_whole).
+// every mode: the ctest tests security_whole, security_process_limits, security_ordinary_user).
 #include "image_io.h"
 #include "security_grading.h"
 
@@ -19,7 +19,8 @@ namespace fs = std::filesystem;
 namespace {
 
 // Grades a submission of `files` (see above), all seven tasks; `options` go to grade-submission.
-// Every task graded was, and where it had no hostile file (the shipped stubs) it earned no points (the stubs pass a few test cases, which the rubric weighs 0).
+// Every task graded was, and where it had no hostile file (the shipped stubs) it earned no points
+// (the stubs pass a few test cases, which the rubric weighs 0).
 std::map<int, Grade> grade_submission(const Temp_Dir& dir, const std::map<int, std::string>& files,
                                       const std::string& options = "") {
 	std::map<int, Grade> grades = grade_files(dir, files, options);
