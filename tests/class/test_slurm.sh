@@ -63,10 +63,10 @@ export SLURM_CONF=$cluster/slurm.conf
 slurmctld -f "$SLURM_CONF" || fail "slurmctld did not start: $(tail -5 "$cluster/log/slurmctld.log")"
 slurmd -f "$SLURM_CONF" || fail "slurmd did not start: $(tail -5 "$cluster/log/slurmd.log")"
 for _ in $(seq 30); do
-	sinfo -h -o %t 2>/dev/null | grep -q idle && break
+	grep -q idle <<<"$(sinfo -h -o %t 2>/dev/null)" && break
 	sleep 1
 done
-sinfo -h -o %t | grep -q idle || fail "the node did not come up: $(tail -5 "$cluster/log/slurmd.log")"
+grep -q idle <<<"$(sinfo -h -o %t)" || fail "the node did not come up: $(tail -5 "$cluster/log/slurmd.log")"
 echo "Slurm test: a one-node cluster is up: $(sinfo -h -o '%P %D %t %N')"
 
 # The job array: task i grades the i-th submission with the lab's own command.

@@ -62,7 +62,7 @@ grade() {
 	[ -f "$results" ] || fail "$name: no results.json"
 	cp "$results" "$out/$name.results.json"
 	local score tests
-	score=$(grep -o '^\s*"score": *[0-9.]*' "$results" | head -1 | grep -o '[0-9.]*$')
+	score=$(grep -m1 -o '^\s*"score": *[0-9.]*' "$results" | grep -o '[0-9.]*$')
 	tests=$(grep -c '"max_score"' "$results")
 	[ "$tests" -eq "$cases" ] || fail "$name: results.json has $tests test entries, the rubric $cases"
 	case "$expectation" in

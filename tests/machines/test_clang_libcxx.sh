@@ -33,7 +33,7 @@ warnings=$(grep -E "^$root/[^:]+:[0-9]+:[0-9]+: warning:" "$out/build.log" | gre
 $warnings"
 echo "clang/libc++ test: no warning in the lab's files"
 # Every dynamic C++ runtime a judge loads: libc++, and libstdc++ only through the C libraries.
-ldd "$build/tests/judge_task1" | grep -q 'libc++\.so' || fail "judge_task1 is not linked with libc++"
+grep -q 'libc++\.so' <<<"$(ldd "$build/tests/judge_task1")" || fail "judge_task1 is not linked with libc++"
 
 start=$SECONDS
 (cd "$root" && ctest --test-dir "$build" --output-on-failure --no-tests=error -j "$(nproc)" \

@@ -36,7 +36,7 @@ took "a Debian 13 root and a clone of $(git -C "$root" rev-parse --short HEAD)" 
 start=$SECONDS
 student machine "$system" "./lab render" >"$out/render.out" 2>"$out/render.log" ||
 	fail "./lab render failed: $(tail -20 "$out/render.log")"
-png=$(sed -n 's/^wrote \([^ ]*\.png\)$/\1/p' "$out/render.out" | head -1)
+png=$(sed -n 's/^wrote \([^ ]*\.png\)$/\1/p;T;q' "$out/render.out")
 [ -n "$png" ] && [ -s "$home/lab/$png" ] || fail "./lab render did not write its PNG: $(tail -5 "$out/render.out")"
 versions=$(in_root machine "$system" dpkg-query -W -f '${Package} ${Version}, ' libcatch2-dev g++ cmake libglm-dev \
 	libcpp-httplib-dev libtinyobjloader-dev bubblewrap)
@@ -74,7 +74,7 @@ start=$SECONDS
 student machine "$system" "./lab grade-submission reference --out ~/graded" >"$out/grade_submission.log" 2>&1 ||
 	fail "./lab grade-submission failed: $(tail -20 "$out/grade_submission.log")"
 total=$(grep -o '"points": *[0-9.]*' "$root/grading/rubric.json" | grep -o '[0-9.]*$' | paste -sd+ | bc)
-score=$(grep -o '^\s*"score": *[0-9.]*' "$home/graded/results.json" | head -1 | grep -o '[0-9.]*$')
+score=$(grep -m1 -o '^\s*"score": *[0-9.]*' "$home/graded/results.json" | grep -o '[0-9.]*$')
 awk -v s="$score" -v t="$total" 'BEGIN { exit !(s == t) }' || fail "grade-submission of the reference scored $score of $total"
 grep -q '"sandbox": "sandbox: bubblewrap' "$home/graded/task1.json" || fail "grade-submission did not grade in bubblewrap"
 took "./lab grade-submission of the reference: $score of $total points" "$start"

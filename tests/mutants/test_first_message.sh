@@ -23,7 +23,7 @@ if [ "${3:-}" = --mutant ]; then
 	mapfile -t says < <(sed -n 's/^says: //p' <<<"$header")
 	mapfile -t nevers < <(sed -n 's/^never: //p' <<<"$header")
 	[ -n "$first" ] || fail "$mutant: its header has no line 'first: <how the first failing test case's name begins>'"
-	printf '%s\n' "${says[@]}" | grep -q '§' ||
+	grep -q '§' <<<"${says[*]}" ||
 		fail "$mutant: its header has no line 'says: §N.M' (the handout section the first message must name)"
 	[ ${#says[@]} -ge 2 ] || fail "$mutant: its header needs a line 'says: <the function to fix>' besides the section"
 else
@@ -33,7 +33,7 @@ else
 fi
 output=$("$judge" --subject "$subject" 2>&1) && fail "the judge passed $subject"
 # A failing test case's first line: "FAIL  " and its name (grading/judge/lab_reporter.cpp).
-name=$(sed -n 's/^FAIL  //p' <<<"$output" | head -1)
+name=$(sed -n '/^FAIL  /{s///p;q}' <<<"$output")
 [[ $name == "$first"* ]] ||
 	fail "the first failing test case is '$name'; expected one whose name begins with '$first'"
 # The first screen, with Catch2's wrapping undone: it breaks lines at spaces and after some

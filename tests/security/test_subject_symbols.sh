@@ -27,7 +27,7 @@ mapfile -t shipped_compiled < <(cut -d' ' -f2 "$manifest" | grep '\.cpp$' | xarg
 
 # The source files whose objects PROGRAM links, one per line.
 sources_of() { readelf -sW "$1" | awk '$4 == "FILE" { print $8 }' | sort -u; }
-links() { sources_of "$1" | grep -qxF "$2"; }
+links() { grep -qxF "$2" <<<"$(sources_of "$1")"; }
 
 # The control: the reference's subject links every one of them.
 for file in "${fast_accelerator[@]}" "${nee_integrator[@]}"; do

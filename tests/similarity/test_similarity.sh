@@ -61,13 +61,13 @@ planted() {
 	esac
 }
 for task in 2 5; do
-	top3=$(csv_pairs | awk -F, -v t="$task" '$1 == t' | head -3)
+	top3=$(csv_pairs | awk -F, -v t="$task" '$1 == t && ++n <= 3')
 	while IFS=, read -r n a b sim flagged; do
 		planted "$n,$a,$b" || fail "task $task: the top three pairs should be the planted copies, but $a and $b ($sim) is among them"
 		[ "$flagged" = 1 ] || fail "task $task: the planted pair $a and $b ($sim) is not flagged"
 	done <<<"$top3"
 	lowest_copy=$(echo "$top3" | cut -d, -f4 | sort -g | head -1)
-	highest_other=$(csv_pairs | awk -F, -v t="$task" '$1 == t' | tail -n +4 | head -1 | cut -d, -f4)
+	highest_other=$(csv_pairs | awk -F, -v t="$task" '$1 == t && ++n == 4 { print $4 }')
 	awk -v copy="$lowest_copy" -v other="$highest_other" -v th="$threshold" -v m="$MARGIN" \
 		'BEGIN { exit !(copy >= th + m && other <= th - m) }' ||
 		fail "task $task: the copies' lowest similarity $lowest_copy and the other pairs' highest $highest_other" \
