@@ -17,5 +17,5 @@ struct Visit_Counts {
 	double triangles = 0; // per ray: triangles in the leaves among them
 };
 // Averaged over `rays`, with `hits[i]` the closest hit distance of rays[i] (INF_F for a miss). This
-// is what an ideal front-to-back traversal visits (framework/render/bvh_visits.h).
+// is what an ideal front-to-back traversal visits (framework/core/bvh_visits.h).
 Visit_Counts visit_counts(const BVH<Triangle>& bvh, const std::vector<Ray>& rays, const std::vector<float>& hits);

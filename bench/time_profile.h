@@ -1,5 +1,5 @@
 #pragma once
-// Where a render's time goes (throughput_bench): a render observer (framework/render/render_observer.h)
+// Where a render's time goes (throughput_bench): a render observer (framework/core/render_observer.h)
 // that counts, and times, the scene's closest-hit queries in Pathtracer::trace and light sampling
 // (sample_area_lights, area_lights_pdf) on the thread where it is active; everything else is
 // shading (BSDFs, the estimator, roulette), camera rays and the film. It times one call of a kind in

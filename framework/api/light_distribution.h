@@ -1,10 +1,11 @@
 #pragma once
-// Which light a light sample aims at (Pathtracer::sample_area_lights, sample_light). Lights 0 .. n - 1
-// are the scene's area lights, light n its environment, if it has one. Light_Choice::uniform takes
-// each equally often; Light_Choice::power mostly in proportion to the power it emits, so that a
-// bright lamp gets more samples than a dim one (pbrt-v4's PowerLightSampler); Light_Choice::tree by
-// how much light each may send to the point being shaded (light_tree.h). Whichever way, the light
-// pdf divides by the probability of the light chosen, so all estimate the same image.
+// Which light a light sample aims at (Pathtracer::sample_area_lights, sample_light). Lights 0 to
+// n - 1 are the scene's area lights, light n its environment, if it has one. Light_Choice::uniform
+// takes each equally often; Light_Choice::power mostly in proportion to the power it emits, so that
+// a bright lamp gets more samples than a dim one (pbrt-v4's PowerLightSampler); Light_Choice::tree
+// by how much light each may send to the point being shaded (framework/scene/light_tree.h).
+// Whichever way, the light pdf divides by the probability of the light chosen, so all estimate the
+// same image.
 //
 // Power says how much light a light sends into the scene, not how much reaches a given point: the
 // sky of a scene with a 40 x 40 ground has 38 times the power of scenes/dragon.json's lamp, which
@@ -27,7 +28,7 @@
 #include <memory>
 #include <vector>
 
-class Light_Tree; // light_tree.h (framework code, not the student's API)
+class Light_Tree; // framework/scene/light_tree.h (framework code, not the student's API)
 
 // The power each light emits, in the order above: an area light pi * area * luminance(emission);
 // the environment pi R^2 times the integral of its luminance over the

@@ -55,7 +55,7 @@ public:
 	uint32_t material(size_t i) const {
 		return lights[i].material;
 	}
-	// Light i's shape, for the light tree's bounds (light_bounds.h).
+	// Light i's shape, for the light tree's bounds (framework/scene/light_bounds.h).
 	const Area_Light& light(size_t i) const {
 		return lights[i];
 	}

@@ -56,9 +56,10 @@ public:
 	// uniformly at random in the pixel, the camera ray through it, and trace() of that ray.
 	Spectrum trace_pixel(uint32_t x, uint32_t y, RNG& rng) const;
 
-	// Framework: radiance arriving along `ray` in the selected view. For View::path, the estimate of
-	// the integrator settings.integrator names (path_integrator.h): by default task 4's, which
-	// intersects the scene and returns the environment on a miss and shade() on a hit.
+	// Framework: radiance arriving along `ray` in the selected view. For View::path, the estimate
+	// of the integrator settings.integrator names (framework/render/path_integrator.h): by default
+	// task 4's, which intersects the scene and returns the environment on a miss and shade() on a
+	// hit.
 	Spectrum trace(RNG& rng, const Ray& ray) const;
 
 	// Task 4 (student/task4_path.cpp): the radiance leaving hit.position towards ray.point:
@@ -87,8 +88,9 @@ public:
 	// world space, towards the previous vertex; hit.position already lifted off the surface): the
 	// light reflected towards out_dir from one light sample, f * L * |cos theta| / pdf, weighted by
 	// the power heuristic against BSDF sampling, and 0 if the shadow ray is blocked. The NEE
-	// integrator (--integrator nee, nee_integrator.h) adds it at every vertex of a continuous BSDF
-	// in a scene with lights, and weights the emission its BSDF samples find by the heuristic.
+	// integrator (--integrator nee, framework/render/nee_integrator.h) adds it at every vertex of a
+	// continuous BSDF in a scene with lights, and weights the emission its BSDF samples find by the
+	// heuristic.
 	Spectrum estimate_direct(RNG& rng, const Trace& hit, const BSDF& bsdf, Vec3 out_dir) const;
 
 	// Framework: the Part I shading (View::eye_light) of a hit.

@@ -10,9 +10,9 @@ enum class Sampler {
 	// assume independent samples.
 	independent,
 	// Low-discrepancy: the pixel's samples are the points of an Owen-scrambled Sobol' sequence
-	// (owen_sobol.h), one sequence per dimension (the n-th draw of a sample). Each sample is still
-	// uniform, so every estimator stays unbiased, but the samples of a pixel are spread evenly
-	// instead of clumping, and its error falls faster. Renders use it by default.
+	// (framework/render/owen_sobol.h), one sequence per dimension (the n-th draw of a sample). Each
+	// sample is still uniform, so every estimator stays unbiased, but the samples of a pixel are
+	// spread evenly instead of clumping, and its error falls faster. Renders use it by default.
 	sobol,
 };
 bool parse_sampler(const std::string& name, Sampler& sampler);
@@ -41,7 +41,7 @@ public:
 	// and unit2() is one point of a 2D sequence: its two numbers are stratified together.
 
 	// Framework: a path's ray of `depth` begins (Sampler::sobol: its draws start at their own
-	// dimensions, owen_sobol.h).
+	// dimensions, framework/render/owen_sobol.h).
 	void begin_vertex(uint32_t depth);
 
 private:

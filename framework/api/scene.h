@@ -15,13 +15,13 @@
 // How a render estimates the light a path vertex reflects (--integrator).
 enum class Integrator {
 	mixture, // task 4's estimator with task 6's one-sample mixture: the lab's, and the graders'
-	nee,     // next-event estimation with multiple importance sampling (nee_integrator.h)
+	nee,     // next-event estimation with multiple importance sampling (framework/render/nee_integrator.h)
 };
 // How light sampling chooses among the lights (--light-choice; light_distribution.h).
 enum class Light_Choice {
 	uniform, // every light equally often
 	power,   // in proportion to the power each light emits
-	tree,    // in proportion to the light each may send to the shading point (light_tree.h)
+	tree,    // in proportion to the light each may send to the shading point (framework/scene/light_tree.h)
 };
 
 struct Render_Settings {
@@ -40,7 +40,7 @@ struct Render_Settings {
 	// Estimators of the same image. These defaults are what the graders' statistics
 	// assume (independent samples, the lab's estimator); the renderer's command line defaults to
 	// Sampler::sobol, pathtracer_reference to Integrator::nee, and Integrator::nee to
-	// Light_Choice::tree (override_settings, cli_options.h).
+	// Light_Choice::tree (override_settings, framework/cli/cli_options.h).
 	Sampler sampler = Sampler::independent;
 	Integrator integrator = Integrator::mixture;
 	Light_Choice light_choice = Light_Choice::power;

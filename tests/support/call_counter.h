@@ -1,5 +1,5 @@
 #pragma once
-// Counts what the framework reports to the render observer (framework/render/render_observer.h) on this
+// Counts what the framework reports to the render observer (framework/core/render_observer.h) on this
 // thread while it is alive: the scene's closest-hit queries, light sampling, and Instance::hit calls.
 #include "render_observer.h"
 

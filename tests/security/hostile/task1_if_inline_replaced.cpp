@@ -1,5 +1,5 @@
 // Hostile: correct only if its own version of an inline framework function replaces the
-// framework's in the subject: Render_Observer::begin (framework/render/render_observer.h, which
+// framework's in the subject: Render_Observer::begin (framework/core/render_observer.h, which
 // every traced ray calls through the observer's vtable), declared here by hand and defined inline,
 // so that its object carries a weak copy beside the framework's. Whichever copy the linker keeps is
 // the one every caller runs; taking its address here shows which.
