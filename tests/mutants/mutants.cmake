@@ -1,7 +1,8 @@
 # Mutants as edits (tests/mutants/README.md): lab_mutant_source writes a mutant's source from its
 # .mutant file and the task file it edits; a correct variant's (tests/variants/, header 'variant:'
-# instead of 'mutant:') from its .variant file the same way. Used at configure time by tests/mutants/CMakeLists.txt,
-# and by tests/mutants/apply_mutant.cmake in script mode.
+# instead of 'mutant:') from its .variant file the same way. Used at configure time by
+# tests/mutants/CMakeLists.txt and tests/variants/CMakeLists.txt, and by
+# tests/mutants/apply_mutant.cmake in script mode (the stub's mutants, made by the build).
 #
 # Every text is handled as one whole string (string(FIND), string(SUBSTRING), quoted arguments),
 # never as a list: C++ is full of ';', which a list would split at.
@@ -16,7 +17,7 @@ function(lab_mutant_line_at text offset out)
 endfunction()
 
 # lab_mutant_source(<mutant> <base> <output>): reads the .mutant file <mutant>, applies its edits
-# in order to <base> (the reference's task file) and writes the result to <output>, below a comment
+# in order to <base> (the reference's task file, or the stub's) and writes the result to <output>, below a comment
 # that names the mistake. <output> is rewritten only when its text changes, so a reconfigure
 # rebuilds only the mutants that changed. The base and the .mutant file become configure
 # dependencies: editing either re-applies the edits. Configuration stops, naming the .mutant file,
