@@ -10,8 +10,8 @@ Strategy_Setup set_up(const std::string& scene_path, const Strategy& strategy, u
 	                              std::to_string(height)};
 	args.insert(args.end(), strategy.flags.begin(), strategy.flags.end());
 	Cli_Options cli = parse_cli_options(args);
-	if (!cli.integrator) cli.integrator = Integrator::nee; // pathtracer_reference's default (cli/main.cpp)
-	Strategy_Setup setup{std::make_unique<Scene>(load_scene(scene_path)), {}};
+	if (!cli.integrator) cli.integrator = "nee"; // pathtracer_reference's default (cli/main.cpp)
+	Strategy_Setup setup{std::make_unique<Scene>(load_scene(scene_path)), {}, estimator_choice(cli)};
 	override_environment(*setup.scene, cli);
 	setup.scene->camera.aspect_ratio = float(width) / float(height);
 	setup.settings = override_settings(setup.scene->settings, cli);
@@ -22,7 +22,7 @@ Timed_Render timed_render(const Strategy_Setup& setup, uint32_t spp, uint64_t se
 	Render_Settings settings = setup.settings;
 	settings.samples = spp;
 	settings.seed = seed;
-	Pathtracer pathtracer(*setup.scene, settings);
+	Pathtracer pathtracer(*setup.scene, settings, View::path, setup.estimator);
 	Render_Options options;
 	options.threads = threads;
 	Timed_Render result;

@@ -2,6 +2,7 @@
 // A strategy of the run-time-against-error benchmarks (convergence, time-to-error): a name and a
 // list of the renderer's own flags (framework/cli/cli_options.cpp), so that
 // `pathtracer_reference SCENE FLAGS` renders exactly what the benchmark measures.
+#include "estimator.h"
 #include "render.h"
 
 #include <memory>
@@ -18,6 +19,7 @@ struct Strategy {
 struct Strategy_Setup {
 	std::unique_ptr<Scene> scene;
 	Render_Settings settings;
+	Estimator_Choice estimator;
 };
 Strategy_Setup set_up(const std::string& scene_path, const Strategy& strategy, uint32_t width, uint32_t height);
 

@@ -282,7 +282,7 @@ Cached_Reference reference_for(const Experiment& e, const Options& o) {
 	settings.samples = REFERENCE_FACTOR * o.max_spp;
 	settings.seed = REFERENCE_SEED;
 	std::string identity = read_text_file(e.scene) + "|" + joined(strategy.flags);
-	Cached_Reference cached = cached_reference(Pathtracer(*setup.scene, settings), identity, o.cache, o.threads);
+	Cached_Reference cached = cached_reference(Pathtracer(*setup.scene, settings, View::path, setup.estimator), identity, o.cache, o.threads);
 	if (cached.from_cache)
 		std::printf("reference: %u spp by \"%s\", independent samples, from the cache %s (delete it after changing the "
 		            "renderer)\n",

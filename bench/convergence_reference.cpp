@@ -1,4 +1,5 @@
 #include "convergence_reference.h"
+#include "estimator.h"
 #include "image_io.h"
 #include "render.h"
 
@@ -15,12 +16,12 @@ uint64_t fnv1a(const std::string& text) {
 	return hash;
 }
 
-std::string cache_name(const Render_Settings& s, const std::string& identity) {
+std::string cache_name(const Render_Settings& s, const Estimator_Choice& e, const std::string& identity) {
 	std::string key = identity + "|" + std::to_string(s.width) + "x" + std::to_string(s.height) + "|spp " +
 	                  std::to_string(s.samples) + "|depth " + std::to_string(s.max_depth) + "|seed " +
 	                  std::to_string(s.seed) + "|lights " + std::to_string(s.light_sampling) + "|roulette " +
-	                  std::to_string(s.russian_roulette) + "|sampler " + sampler_name(s.sampler) + "|integrator " +
-	                  std::to_string(int(s.integrator)) + "|light choice " + std::to_string(int(s.light_choice));
+	                  std::to_string(s.russian_roulette) + "|sampler " + sampler_name(e.sampler) + "|integrator " +
+	                  e.integrator + "|light choice " + light_choice_name(e.light_choice);
 	char name[64];
 	std::snprintf(name, sizeof name, "reference-%016llx", static_cast<unsigned long long>(fnv1a(key)));
 	return name;
@@ -31,7 +32,7 @@ std::string cache_name(const Render_Settings& s, const std::string& identity) {
 Cached_Reference cached_reference(const Pathtracer& pathtracer, const std::string& identity,
                                   const std::string& cache_dir, uint32_t threads) {
 	const Render_Settings& settings = pathtracer.settings;
-	std::string stem = cache_dir + "/" + cache_name(settings, identity);
+	std::string stem = cache_dir + "/" + cache_name(settings, pathtracer.estimator().choice, identity);
 	Cached_Reference cached;
 	cached.path = stem + "-mean.exr";
 	std::string variance_path = stem + "-variance.exr";

@@ -192,7 +192,7 @@ Reference reference_image(const Options& o) {
 	settings.samples = o.reference_spp;
 	settings.seed = REFERENCE_SEED;
 	std::string identity = read_text_file(SCENE) + "|" + joined(reference.flags);
-	Cached_Reference cached = cached_reference(Pathtracer(*setup.scene, settings), identity, o.cache, THREADS);
+	Cached_Reference cached = cached_reference(Pathtracer(*setup.scene, settings, View::path, setup.estimator), identity, o.cache, THREADS);
 	if (cached.from_cache)
 		std::printf("reference: %u spp, from the cache %s (delete it after changing the renderer)\n", o.reference_spp,
 		            cached.path.c_str());

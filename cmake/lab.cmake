@@ -144,8 +144,8 @@ endfunction()
 # [TASK<n> <impl_n>]... [ACCELERATOR fast|plain]) sets <out> to those parts' targets: task<n>_<impl_n>
 # for each task; the framework's accelerator that suits the choice (framework/api/accelerator.h):
 # the fast one only where tasks 2 and 3 are both the reference, else the plain one, which is task 3's
-# BVH::hit, so that a student's code runs end to end; and the NEE integrator only where task 4 is the
-# reference (framework/CMakeLists.txt), else the one that refuses. ACCELERATOR overrides the
+# BVH::hit, so that a student's code runs end to end; and the integrators beyond task 4's only where
+# task 4 is the reference (framework/render/integrators.h). ACCELERATOR overrides the
 # accelerator's choice: only to prove that a test notices the wrong one. lab_link_tasks links a
 # target with them; the grading kit (grading/CMakeLists.txt) writes them out for grade-task.
 function(lab_composition out impl)
@@ -169,12 +169,11 @@ function(lab_composition out impl)
 			set(accelerator plain)
 		endif()
 	endif()
-	# Next-event estimation is an estimator of task 4's image: only with the reference of task 4.
-	set(integrator none)
+	list(APPEND parts accelerator_${accelerator})
+	# Next-event estimation and any other integrator estimate task 4's image: only with its reference.
 	if(impl_4 STREQUAL "reference")
-		set(integrator nee)
+		list(APPEND parts integrators_beyond_task4)
 	endif()
-	list(APPEND parts accelerator_${accelerator} integrator_${integrator})
 	set(${out} ${parts} PARENT_SCOPE)
 endfunction()
 

@@ -2,9 +2,9 @@
 // How the framework queries a finished BVH (Tri_Mesh::hit, Scene::hit): the closest hit, and
 // whether anything is hit (an occlusion query). A program links one of two implementations, chosen
 // with its tasks (cmake/lab.cmake, lab_link_tasks):
-// - where tasks 2 and 3 are both the reference, the fast one (framework/accel/fast/wide_bvh.h): it
-//   folds the finished tree into wide nodes and packs a mesh's triangles, finds the closest
-//   (triangle, t), and lets Triangle::hit make the record of that triangle;
+// - where tasks 2 and 3 are both the reference, the fast one (shipped compiled): it folds the
+//   finished tree into wide nodes and packs a mesh's triangles, finds the closest (triangle, t),
+//   and lets Triangle::hit make the record of that triangle;
 // - otherwise the plain one (framework/accel/plain_accelerator.cpp): BVH::hit, so that a student's
 //   BBox::hit, BVH::hit and Triangle::hit are what runs, end to end.
 // Either way, hit() returns the record Primitive::hit makes, as BVH::hit does.
@@ -12,7 +12,7 @@
 
 #include <memory>
 
-struct Wide_BVH; // the fast implementation's data (framework/accel/fast/wide_bvh.h)
+struct Wide_BVH; // the fast implementation's data
 
 template<typename Primitive> class Accelerator {
 public:

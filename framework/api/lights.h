@@ -39,10 +39,10 @@ public:
 	float pdf(size_t i, Vec3 from, Vec3 dir) const;
 
 	// For next-event estimation (Pathtracer::sample_light) and the choice of a light by power
-	// (light_distribution.h): a point chosen as sample() chooses it, with the unit normal of the
-	// side it emits from; the solid-angle density, seen from `from`, of choosing that point,
-	// dist^2 / (|cos theta_light| area); the light an object is (-1: none); a light's area and
-	// material.
+	// (framework/scene/light_distribution.h): a point chosen as sample() chooses it, with the unit
+	// normal of the side it emits from; the solid-angle density, seen from `from`, of choosing that
+	// point, dist^2 / (|cos theta_light| area); the light an object is (-1: none); a light's area
+	// and material.
 	struct Point {
 		Vec3 position, normal;
 	};

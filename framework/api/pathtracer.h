@@ -5,10 +5,10 @@
 // Depth: a camera ray has depth 0 and each bounce adds 1. A surface hit by a ray of depth d may
 // scatter only while d < max_depth, so max_depth = 0 shows emitters only, max_depth = 1 adds
 // direct lighting (one bounce), and so on.
-#include "light_distribution.h"
 #include "scene.h"
 #include "spawn_ray.h"
 
+#include <memory>
 #include <string>
 
 // What a render shows. `path` is the path tracer; the others are debug views (framework code
@@ -48,18 +48,26 @@ struct Light_Sample {
 // pdf_f^2 / (pdf_f^2 + pdf_g^2), each pdf the density of the same direction.
 float power_heuristic(float pdf_f, float pdf_g);
 
+// The framework's estimator of a render (framework/render/estimator.h): its integrator, random
+// numbers and choice of lights.
+struct Estimator;
+struct Estimator_Choice;
+
 class Pathtracer {
 public:
+	// With the lab's estimator, the graders': task 4's shade() continuing paths in the directions
+	// task 6's sample_incoming() chooses, independent random numbers, lights chosen by power.
 	Pathtracer(const Scene& scene, Render_Settings settings, View view = View::path);
+	// Framework: with another estimator of the same image (--integrator, --sampler, --light-choice).
+	Pathtracer(const Scene& scene, Render_Settings settings, View view, const Estimator_Choice& estimator);
 
 	// Task 1 (student/task1_camera.cpp): one supersampling sample of pixel (x, y): a point chosen
 	// uniformly at random in the pixel, the camera ray through it, and trace() of that ray.
 	Spectrum trace_pixel(uint32_t x, uint32_t y, RNG& rng) const;
 
 	// Framework: radiance arriving along `ray` in the selected view. For View::path, the estimate
-	// of the integrator settings.integrator names (framework/render/path_integrator.h): by default
-	// task 4's, which intersects the scene and returns the environment on a miss and shade() on a
-	// hit.
+	// of the estimator's integrator: by default task 4's, which intersects the scene and returns
+	// the environment on a miss and shade() on a hit.
 	Spectrum trace(RNG& rng, const Ray& ray) const;
 
 	// Task 4 (student/task4_path.cpp): the radiance leaving hit.position towards ray.point:
@@ -88,9 +96,9 @@ public:
 	// world space, towards the previous vertex; hit.position already lifted off the surface): the
 	// light reflected towards out_dir from one light sample, f * L * |cos theta| / pdf, weighted by
 	// the power heuristic against BSDF sampling, and 0 if the shadow ray is blocked. The NEE
-	// integrator (--integrator nee, framework/render/nee_integrator.h) adds it at every vertex of a
-	// continuous BSDF in a scene with lights, and weights the emission its BSDF samples find by the
-	// heuristic.
+	// integrator (--integrator nee, framework/render/integrators/nee_integrator.h) adds it at every
+	// vertex of a continuous BSDF in a scene with lights, and weights the emission its BSDF samples
+	// find by the heuristic.
 	Spectrum estimate_direct(RNG& rng, const Trace& hit, const BSDF& bsdf, Vec3 out_dir) const;
 
 	// Framework: the Part I shading (View::eye_light) of a hit.
@@ -99,8 +107,13 @@ public:
 	const Scene& scene;
 	Render_Settings settings; // image size, samples, max_depth, seed
 	View view = View::path;
-	Light_Distribution light_distribution; // which light sample_area_lights and sample_light aim at
+
+	// Framework: the estimator, which also decides which light sample_area_lights and
+	// sample_light aim at.
+	const Estimator& estimator() const;
 
 private:
 	Spectrum debug_view(const Ray& ray) const;
+
+	std::shared_ptr<const Estimator> chosen;
 };

@@ -1,22 +1,9 @@
 #pragma once
 #include "vec_math.h"
 
-#include <string>
+#include <cstdint>
 
-// The random numbers of a render (Render_Settings::sampler, --sampler).
-enum class Sampler {
-	// PCG32 (O'Neill 2014): every number independent of every other. The graders and the image
-	// z-tests use it: their statistics (chi-square counts, a pixel's variance of the mean s^2 / n)
-	// assume independent samples.
-	independent,
-	// Low-discrepancy: the pixel's samples are the points of an Owen-scrambled Sobol' sequence
-	// (framework/render/owen_sobol.h), one sequence per dimension (the n-th draw of a sample). Each
-	// sample is still uniform, so every estimator stays unbiased, but the samples of a pixel are
-	// spread evenly instead of clumping, and its error falls faster. Renders use it by default.
-	sobol,
-};
-bool parse_sampler(const std::string& name, Sampler& sampler);
-const char* sampler_name(Sampler sampler);
+enum class Sampler; // the framework's choice of numbers (framework/render/sampler.h)
 
 // A random number generator for one pixel sample (or, constructed directly, a plain PCG32 stream:
 // 64-bit LCG state, XSH-RR output).
@@ -29,23 +16,24 @@ public:
 	explicit RNG(uint64_t seed = 0, uint64_t stream = 0);
 
 	// The generator for one pixel sample.
-	static RNG for_sample(uint64_t render_seed, uint64_t pixel_index, uint64_t sample_index,
-	                      Sampler sampler = Sampler::independent);
+	static RNG for_sample(uint64_t render_seed, uint64_t pixel_index, uint64_t sample_index);
 
 	uint32_t integer();            // uniform in [0, 2^32)
 	uint32_t integer(uint32_t n);  // uniform in [0, n), n > 0, without modulo bias (*)
 	float unit();                  // uniform in [0, 1), never 1
 	Vec2 unit2();                  // two independent unit() numbers (*)
 	bool coin_flip(float p);       // true with probability p
-	// (*) Sampler::sobol: integer(n) is floor(u * n) of a 32-bit u (off uniform by at most 2^-32),
-	// and unit2() is one point of a 2D sequence: its two numbers are stratified together.
+	// (*) Renders with low-discrepancy numbers (--sampler sobol, the renderer's default): integer(n)
+	// is floor(u * n) of a 32-bit u (off uniform by at most 2^-32), and unit2() is one point of a 2D
+	// sequence: its two numbers are stratified together.
 
-	// Framework: a path's ray of `depth` begins (Sampler::sobol: its draws start at their own
-	// dimensions, framework/render/owen_sobol.h).
+	// Framework: a path's ray of `depth` begins (low-discrepancy numbers: its draws start at their
+	// own dimensions, framework/render/owen_sobol.h).
 	void begin_vertex(uint32_t depth);
 
 private:
 	friend struct RNG_State;
+	friend RNG generator_for_sample(uint64_t, uint64_t, uint64_t, Sampler);
 
 	uint32_t pcg32();
 	bool draws_low_discrepancy() const;
@@ -53,7 +41,7 @@ private:
 
 	uint64_t state = 0;
 	uint64_t increment = 1;
-	// Sampler::sobol: the pixel's key (hashed with a dimension into its seeds), the sample index
+	// Low-discrepancy numbers: the pixel's key (hashed with a dimension into its seeds), the sample index
 	// bit-reversed, and the next dimension.
 	bool low_discrepancy = false;
 	uint32_t reversed_index = 0, dimension = 0;

@@ -12,18 +12,6 @@
 #include <variant>
 #include <vector>
 
-// How a render estimates the light a path vertex reflects (--integrator).
-enum class Integrator {
-	mixture, // task 4's estimator with task 6's one-sample mixture: the lab's, and the graders'
-	nee,     // next-event estimation with multiple importance sampling (framework/render/nee_integrator.h)
-};
-// How light sampling chooses among the lights (--light-choice; light_distribution.h).
-enum class Light_Choice {
-	uniform, // every light equally often
-	power,   // in proportion to the power each light emits
-	tree,    // in proportion to the light each may send to the shading point (framework/scene/light_tree.h)
-};
-
 struct Render_Settings {
 	// The largest film the loader and the command line accept (4096 x 4096 pixels), so a typo
 	// cannot exhaust memory.
@@ -34,16 +22,11 @@ struct Render_Settings {
 	uint32_t samples = 16;   // samples per pixel
 	uint32_t max_depth = 8;  // maximum number of bounces (see pathtracer.h)
 	uint64_t seed = 0;
-	// Strategy switches, for comparing estimators; both estimate the same image.
+	// Strategy switches, for comparing estimators; both estimate the same image. (The renderer's
+	// other estimators of it, --integrator, --sampler and --light-choice, are the framework's:
+	// framework/render/estimator.h.)
 	bool light_sampling = true;   // false: has_lights() is false, so task 6 samples the BSDF only
 	bool russian_roulette = true; // false: task 4 never cuts a path before max_depth
-	// Estimators of the same image. These defaults are what the graders' statistics
-	// assume (independent samples, the lab's estimator); the renderer's command line defaults to
-	// Sampler::sobol, pathtracer_reference to Integrator::nee, and Integrator::nee to
-	// Light_Choice::tree (override_settings, framework/cli/cli_options.h).
-	Sampler sampler = Sampler::independent;
-	Integrator integrator = Integrator::mixture;
-	Light_Choice light_choice = Light_Choice::power;
 };
 
 using Environment = std::variant<Env_Constant, Env_Map>;

@@ -81,8 +81,10 @@ struct Run_Times {
 	double loading = 0.0, rendering = 0.0;
 };
 
-void report(const Film& film, const Render_Settings& settings, const Cli_Options& options, const Run_Times& times,
+void report(const Film& film, const Pathtracer& pathtracer, const Cli_Options& options, const Run_Times& times,
             const std::vector<std::string>& written, std::ostream& out) {
+	const Render_Settings& settings = pathtracer.settings;
+	const Estimator_Choice& estimator = pathtracer.estimator().choice;
 	double seconds = times.rendering;
 	for (const std::string& path : written) out << "wrote " << path << "\n";
 	View view = options.view;
@@ -97,8 +99,7 @@ void report(const Film& film, const Render_Settings& settings, const Cli_Options
 		out << " (pass " << options.pass << " of " << options.passes << " of " << settings.samples << " samples)";
 	out << ", view " << view_name(view);
 	if (view == View::path)
-		out << ", integrator " << (settings.integrator == Integrator::nee ? "nee" : "mixture") << ", sampler "
-		    << sampler_name(settings.sampler);
+		out << ", integrator " << estimator.integrator << ", sampler " << sampler_name(estimator.sampler);
 	out << ", in " << time << "\n";
 	out << "total: " << seconds_text(times.loading + times.rendering) << " (loading " << seconds_text(times.loading)
 	    << ", rendering " << seconds_text(times.rendering) << ")\n";
@@ -110,7 +111,7 @@ void render_and_write(const Scene& scene, const Cli_Options& options, Run_Times 
                       std::ostream& err, bool err_is_terminal) {
 	check_outputs(options);
 	if (!options.quiet) out << "loaded " << options.scene << " in " << seconds_text(times.loading) << "\n" << std::flush;
-	Pathtracer pathtracer(scene, scene.settings, options.view);
+	Pathtracer pathtracer(scene, scene.settings, options.view, estimator_choice(options));
 	Progress_Bar progress_bar(err, err_is_terminal && !options.quiet);
 	Render_Options render_options;
 	render_options.threads = options.threads;
@@ -124,7 +125,7 @@ void render_and_write(const Scene& scene, const Cli_Options& options, Run_Times 
 	progress_bar.finish();
 
 	std::vector<std::string> written = write_outputs(film, pathtracer.settings, options);
-	if (!options.quiet) report(film, pathtracer.settings, options, times, written, out);
+	if (!options.quiet) report(film, pathtracer, options, times, written, out);
 	if (film.non_finite() > 0) warn_non_finite(film, options, err);
 }
 
@@ -134,7 +135,7 @@ void render_and_write(const Scene& scene, const Cli_Options& options, Run_Times 
 // samples is render()'s with N, bit for bit.
 void stream(const Scene& scene, const Cli_Options& options, std::ostream& out) {
 	constexpr double STREAM_BATCH_SECONDS = 0.25;
-	Pathtracer pathtracer(scene, scene.settings, options.view);
+	Pathtracer pathtracer(scene, scene.settings, options.view, estimator_choice(options));
 	Progressive_Options progressive;
 	progressive.render.threads = options.threads;
 	progressive.samples = pathtracer.settings.samples;
@@ -148,7 +149,7 @@ void stream(const Scene& scene, const Cli_Options& options, std::ostream& out) {
 
 // --follow-pixel: the same paths the renderer takes for that pixel, printed ray by ray.
 void follow(const Scene& scene, const Cli_Options& options, std::ostream& out) {
-	Pathtracer pathtracer(scene, scene.settings, options.view);
+	Pathtracer pathtracer(scene, scene.settings, options.view, estimator_choice(options));
 	auto [x, y] = *options.follow_pixel;
 	if (x >= pathtracer.settings.width || y >= pathtracer.settings.height) {
 		throw Input_Error("--follow-pixel: pixel (" + std::to_string(x) + ", " + std::to_string(y) +
@@ -166,7 +167,7 @@ void follow(const Scene& scene, const Cli_Options& options, std::ostream& out) {
 } // namespace
 
 int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err, bool err_is_terminal,
-            Integrator integrator) {
+            const std::string& integrator) {
 	bool loading_line = false; // "loading SCENE ..." is on the terminal, to be erased
 	try {
 		if (wants_help(args)) {

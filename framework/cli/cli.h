@@ -15,8 +15,8 @@
 //
 // Every option and the scene are checked before rendering, so bad input writes no file.
 // Returns the exit status: 0 on success, CLI_USAGE_ERROR (2) for a bad command line (an unknown
-// option, a bad value, no scene: the same status as ./lab's usage errors), 1 for any other error. `integrator` is the program's default
-// for --integrator (framework/cli/main.cpp).
+// option, a bad value, no scene: the same status as ./lab's usage errors), 1 for any other error.
+// `integrator` is the program's default for --integrator (framework/cli/main.cpp).
 constexpr int CLI_USAGE_ERROR = 2;
 int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
-            bool err_is_terminal = false, Integrator integrator = Integrator::mixture);
+            bool err_is_terminal = false, const std::string& integrator = "mixture");

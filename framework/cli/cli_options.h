@@ -1,6 +1,7 @@
 #pragma once
 // The renderer's command-line options (see cli.h): parsing with one clear error per mistake, and
 // the --help text, both from one table so they cannot disagree.
+#include "estimator.h"
 #include "pathtracer.h"
 
 #include <optional>
@@ -25,9 +26,9 @@ struct Cli_Options {
 	// --env-sampling, --sampler, --integrator, --light-choice.
 	bool light_sampling = true, russian_roulette = true;
 	std::optional<bool> env_importance_sampling; // unset: as the scene says
-	Sampler sampler = Sampler::sobol;             // renders default to low-discrepancy samples
-	std::optional<Integrator> integrator;        // unset: the program's default (run_cli)
-	std::optional<Light_Choice> light_choice;    // unset: tree for NEE, else the settings' (power)
+	Sampler sampler = Sampler::sobol;          // renders default to low-discrepancy samples
+	std::optional<std::string> integrator;    // unset: the program's default (run_cli)
+	std::optional<Light_Choice> light_choice; // unset: the integrator's (integrators.h)
 	// --follow-pixel X,Y: print the life of that pixel's rays instead of rendering an image.
 	std::optional<std::pair<uint32_t, uint32_t>> follow_pixel;
 	uint32_t follow_samples = 1;
@@ -44,6 +45,10 @@ Cli_Options parse_cli_options(const std::vector<std::string>& args);
 // The scene's settings with the command line's overrides. Throws Input_Error for a film larger than
 // Render_Settings::MAX_PIXELS.
 Render_Settings override_settings(Render_Settings settings, const Cli_Options& options);
+
+// The estimator the command line asks for: its integrator (mixture where it names none), sampler
+// and light choice (where it names none, the integrator's).
+Estimator_Choice estimator_choice(const Cli_Options& options);
 
 // --env-sampling: rebuilds the scene's image environment as uniformly or importance-sampled. Throws
 // Input_Error if the scene has no image environment, or importance sampling is asked of a black one.

@@ -7,9 +7,9 @@
 // The reference renders with next-event estimation by default; a student's renderer with the lab's
 // estimator, since NEE runs task 6's optional extension (tasks/CMakeLists.txt defines the switch).
 #ifdef LAB_REFERENCE_RENDERER
-constexpr Integrator DEFAULT_INTEGRATOR = Integrator::nee;
+constexpr const char* DEFAULT_INTEGRATOR = "nee";
 #else
-constexpr Integrator DEFAULT_INTEGRATOR = Integrator::mixture;
+constexpr const char* DEFAULT_INTEGRATOR = "mixture";
 #endif
 
 int main(int argc, char** argv) {

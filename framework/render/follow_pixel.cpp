@@ -1,5 +1,6 @@
 #include "follow_pixel.h"
 #include "camera_projection.h"
+#include "estimator.h"
 #include "lifecycle.h"
 
 #include <nlohmann/json.hpp>
@@ -12,7 +13,8 @@ namespace {
 // Sample s of pixel (x, y), as render() draws it.
 Spectrum trace_sample(const Pathtracer& pathtracer, uint32_t x, uint32_t y, uint32_t s) {
 	const Render_Settings& settings = pathtracer.settings;
-	RNG rng = RNG::for_sample(settings.seed, size_t(y) * settings.width + x, s, settings.sampler);
+	Sampler sampler = pathtracer.estimator().choice.sampler;
+	RNG rng = generator_for_sample(settings.seed, size_t(y) * settings.width + x, s, sampler);
 	return pathtracer.trace_pixel(x, y, rng);
 }
 

@@ -1,11 +1,8 @@
 #pragma once
 // How the radiance along the rays of a path is estimated (View::path). Pathtracer::trace hands each
-// ray to the integrator its settings name (Integrator, scene.h); an integrator works above the
-// Pathtracer, through its public functions:
-//   - Integrator::mixture: task 4's estimator, Pathtracer::shade, which continues paths in the
-//     directions task 6's sample_incoming chooses (path_integrator.cpp);
-//   - Integrator::nee: next-event estimation with multiple importance sampling (nee_integrator.h).
-// Both spawn every ray with spawn_ray (spawn_ray.h).
+// ray to its estimator's integrator (estimator.h), which works above the Pathtracer, through its
+// public functions; the integrators are chosen by name (integrators.h). Each spawns every ray with
+// spawn_ray (spawn_ray.h).
 #include "render_observer.h"
 #include "rng.h"
 #include "scene.h"
@@ -18,9 +15,6 @@ public:
 	// The radiance arriving along `ray`.
 	virtual Spectrum radiance(const Pathtracer& pathtracer, RNG& rng, const Ray& ray) const = 0;
 };
-
-// The integrator `which` names.
-const Path_Integrator& path_integrator(Integrator which);
 
 // One ray of a path, as every integrator traces it: its closest hit in the scene, shaded by
 // shade(hit), or missed() where it leaves the scene. The sampler is told the ray's vertex

@@ -1,5 +1,6 @@
 #include "pathtracer.h"
 #include "bvh_visits.h"
+#include "estimator.h"
 #include "frame.h"
 #include "path_integrator.h"
 #include "render_observer.h"
@@ -46,11 +47,19 @@ const char* view_name(View view) {
 }
 
 Pathtracer::Pathtracer(const Scene& scene_, Render_Settings settings_, View view_)
-	: scene(scene_), settings(settings_), view(view_), light_distribution(scene_, settings_.light_choice) {
+	: Pathtracer(scene_, settings_, view_, Estimator_Choice{}) {
+}
+
+Pathtracer::Pathtracer(const Scene& scene_, Render_Settings settings_, View view_, const Estimator_Choice& estimator)
+	: scene(scene_), settings(settings_), view(view_), chosen(std::make_shared<const Estimator>(scene_, estimator)) {
+}
+
+const Estimator& Pathtracer::estimator() const {
+	return *chosen;
 }
 
 Spectrum Pathtracer::trace(RNG& rng, const Ray& ray) const {
-	if (view == View::path) return path_integrator(settings.integrator).radiance(*this, rng, ray);
+	if (view == View::path) return chosen->integrator.radiance(*this, rng, ray);
 	rng.begin_vertex(ray.depth);
 	return observe<Ray_Traced>([&] { return debug_view(ray); }, ray);
 }
@@ -78,7 +87,7 @@ Spectrum Pathtracer::debug_view(const Ray& ray) const {
 	}
 }
 
-// Lights for sampling: every emissive object, and the environment. light_distribution chooses one.
+// Lights for sampling: every emissive object, and the environment. The estimator's lights choose one.
 // settings.light_sampling = false (--no-light-sampling) hides the lights from task 6, which then
 // samples the BSDF only: the same image, by another estimator.
 bool Pathtracer::has_lights() const {
@@ -98,7 +107,7 @@ Vec3 Pathtracer::sample_area_lights(RNG& rng, Vec3 from) const {
 	require_lights(*this, "sample_area_lights");
 	return observe<Light_Sampled>(
 		[&] {
-			uint32_t i = uint32_t(light_distribution.choose(rng, from).light);
+			uint32_t i = uint32_t(chosen->lights.choose(rng, from).light);
 			if (i < scene.area_lights.count()) return Chosen_Light{scene.area_lights.sample(i, rng, from), i, false};
 			Vec2 u = rng.unit2();
 			return Chosen_Light{std::visit([&](const auto& env) { return env.sample(u); }, *scene.environment), i, true};
@@ -111,20 +120,20 @@ Vec3 Pathtracer::sample_area_lights(RNG& rng, Vec3 from) const {
 // sampled point is, what it emits towards `from`, and the density of choosing it.
 Light_Sample Pathtracer::sample_light(RNG& rng, Vec3 from) const {
 	require_lights(*this, "sample_light");
-	auto [i, chosen] = light_distribution.choose(rng, from);
+	auto [i, probability] = chosen->lights.choose(rng, from);
 	Light_Sample sample;
 	if (i < scene.area_lights.count()) {
 		Area_Lights::Point point = scene.area_lights.sample_point(i, rng);
 		sample.direction = glm::normalize(point.position - from);
 		sample.distance = glm::length(point.position - from);
-		sample.pdf = chosen * scene.area_lights.point_pdf(i, from, point.position, point.normal);
+		sample.pdf = probability * scene.area_lights.point_pdf(i, from, point.position, point.normal);
 		// Emission is one-sided (Material::emitted): from the side the light's normal points to.
 		bool front = glm::dot(point.normal, sample.direction) < 0.0f;
 		sample.radiance = front ? scene.materials[scene.area_lights.material(i)].emission : Spectrum{0.0f};
 	} else {
 		Vec2 u = rng.unit2();
 		sample.direction = std::visit([&](const auto& env) { return env.sample(u); }, *scene.environment);
-		sample.pdf = chosen * std::visit([&](const auto& env) { return env.pdf(sample.direction); }, *scene.environment);
+		sample.pdf = probability * std::visit([&](const auto& env) { return env.pdf(sample.direction); }, *scene.environment);
 		sample.radiance = scene.environment_radiance(sample.direction);
 	}
 	return sample;
@@ -139,10 +148,10 @@ float Pathtracer::area_lights_pdf(Vec3 from, Vec3 dir) const {
 			// A light's probability is asked only where its density is not 0: the tree's costs a walk.
 			for (size_t i = 0; i < area_lights; i++) {
 				float density = scene.area_lights.pdf(i, from, dir);
-				if (density > 0.0f) pdf += light_distribution.probability(i, from) * density;
+				if (density > 0.0f) pdf += chosen->lights.probability(i, from) * density;
 			}
 			if (scene.environment) {
-				float p = light_distribution.probability(area_lights, from);
+				float p = chosen->lights.probability(area_lights, from);
 				if (p > 0.0f) pdf += p * std::visit([&](const auto& env) { return env.pdf(dir); }, *scene.environment);
 			}
 			return pdf;

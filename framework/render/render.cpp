@@ -1,5 +1,6 @@
 #include "render.h"
 #include "render_tiles.h"
+#include "estimator.h"
 
 #include <algorithm>
 #include <atomic>
@@ -31,12 +32,13 @@ uint32_t first_of_pass(uint32_t first, const Render_Options& options) {
 
 void render_tile(const Pathtracer& pt, const Render_Settings& settings, const Render_Options& options, const Tile& tile,
                  uint32_t first, uint32_t end, Film& film) {
+	Sampler sampler = pt.estimator().choice.sampler;
 	for (uint32_t y = tile.y0; y < tile.y1; y++) {
 		for (uint32_t x = tile.x0; x < tile.x1; x++) {
 			size_t index = size_t(y) * film.w + x;
 			Pixel_Stats& pixel = film.pixels[index];
 			for (uint32_t s = first_of_pass(first, options); s < end; s += options.passes) {
-				RNG rng = RNG::for_sample(settings.seed, index, s, settings.sampler);
+				RNG rng = generator_for_sample(settings.seed, index, s, sampler);
 				pixel.add(pt.trace_pixel(x, y, rng));
 			}
 		}

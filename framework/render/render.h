@@ -1,7 +1,7 @@
 #pragma once
 // Rendering: square tiles of pixels rendered in parallel on a thread pool. Every sample of a pixel
-// is drawn in the same tile, in order, with its own RNG::for_sample generator, so the result is
-// bit-identical for any number of threads and any tile order.
+// is drawn in the same tile, in order, with its own generator (generator_for_sample, sampler.h), so
+// the result is bit-identical for any number of threads and any tile order.
 #include "film.h"
 #include "pathtracer.h"
 

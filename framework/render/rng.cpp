@@ -1,5 +1,6 @@
 #include "rng.h"
 #include "owen_sobol.h"
+#include "sampler.h"
 
 #include <algorithm>
 
@@ -13,6 +14,11 @@ uint64_t mix64(uint64_t z) {
 	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
 	z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
 	return z ^ (z >> 31);
+}
+
+// The seed every generator of a pixel starts from.
+uint64_t pixel_seed(uint64_t render_seed, uint64_t pixel_index) {
+	return mix64(render_seed ^ mix64(pixel_index + GOLDEN_GAMMA));
 }
 
 // The top 24 bits scaled by 2^-24: exactly representable, in [0, 1 - 2^-24].
@@ -40,12 +46,16 @@ RNG::RNG(uint64_t seed, uint64_t stream) {
 	pcg32();
 }
 
-RNG RNG::for_sample(uint64_t render_seed, uint64_t pixel_index, uint64_t sample_index, Sampler sampler) {
-	uint64_t seed = mix64(render_seed ^ mix64(pixel_index + GOLDEN_GAMMA));
-	RNG rng(mix64(seed + sample_index), seed);
+RNG RNG::for_sample(uint64_t render_seed, uint64_t pixel_index, uint64_t sample_index) {
+	uint64_t seed = pixel_seed(render_seed, pixel_index);
+	return RNG(mix64(seed + sample_index), seed);
+}
+
+RNG generator_for_sample(uint64_t render_seed, uint64_t pixel_index, uint64_t sample_index, Sampler sampler) {
+	RNG rng = RNG::for_sample(render_seed, pixel_index, sample_index);
 	if (sampler == Sampler::sobol) {
 		rng.low_discrepancy = true;
-		rng.pixel_key = seed; // every sample of the pixel shares the scrambling
+		rng.pixel_key = pixel_seed(render_seed, pixel_index); // every sample of the pixel shares the scrambling
 		rng.reversed_index = owen_sobol::reverse_bits(uint32_t(sample_index));
 	}
 	return rng;

@@ -38,6 +38,15 @@ std::vector<double> light_powers(const Scene& scene) {
 	return powers;
 }
 
+const char* light_choice_name(Light_Choice choice) {
+	switch (choice) {
+	case Light_Choice::uniform: return "uniform";
+	case Light_Choice::power: return "power";
+	case Light_Choice::tree: return "tree";
+	}
+	return "?";
+}
+
 size_t light_count(const Scene& scene) {
 	return scene.area_lights.count() + (scene.environment ? 1 : 0);
 }

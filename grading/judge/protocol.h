@@ -29,6 +29,7 @@
 // and draw from it in the order of the inputs, as a loop over the inputs would.
 #include "material.h"
 #include "pathtracer.h"
+#include "estimator.h"
 #include "film.h"
 #include "rng_state.h"
 #include "scene.h"
@@ -71,8 +72,8 @@ struct Generate_Rays {
 	bool fits(const Answer& a) const { return a.size() == queries.size(); }
 };
 
-// Pathtracer(scene, settings, view).trace_pixel(x, y, rng) for each sample, each with its own
-// generator.
+// Pathtracer(scene, settings, view, estimator).trace_pixel(x, y, rng) for each sample, each with its
+// own generator.
 struct Trace_Pixels {
 	static constexpr Kind KIND{2};
 	static constexpr const char* NAME = "trace_pixels";
@@ -84,24 +85,26 @@ struct Trace_Pixels {
 	};
 	Scene scene;
 	Render_Settings settings;
+	Estimator_Choice estimator;
 	View view = View::path;
 	std::vector<Sample> samples;
-	template<class A> void fields(A& a) { a(scene, settings, view, samples); }
+	template<class A> void fields(A& a) { a(scene, settings, estimator, view, samples); }
 	using Answer = std::vector<Spectrum>;
 	bool fits(const Answer& a) const { return a.size() == samples.size(); }
 };
 
-// render(Pathtracer(scene, settings, view)) on `threads` threads: the whole film, every pixel's
-// samples drawn by the framework as `./lab render` draws them.
+// render(Pathtracer(scene, settings, view, estimator)) on `threads` threads: the whole film, every
+// pixel's samples drawn by the framework as `./lab render` draws them.
 struct Render {
 	static constexpr Kind KIND{3};
 	static constexpr const char* NAME = "render";
 	static constexpr const char* FUNCTIONS = "a render of the scene with your code";
 	Scene scene;
 	Render_Settings settings;
+	Estimator_Choice estimator;
 	View view = View::path;
 	uint32_t threads = 1;
-	template<class A> void fields(A& a) { a(scene, settings, view, threads); }
+	template<class A> void fields(A& a) { a(scene, settings, estimator, view, threads); }
 	using Answer = Film;
 	bool fits(const Answer& a) const { return a.w == settings.width && a.h == settings.height; }
 };
@@ -354,7 +357,7 @@ struct Power_Heuristic {
 };
 
 // Pathtracer(scene, settings).estimate_direct(rng, hit, bsdf, out_dir) for each query, from one
-// generator. (Renders by the NEE integrator are Trace_Pixels and Render with settings.integrator.)
+// generator. (Renders by the NEE integrator are Trace_Pixels and Render with estimator.integrator.)
 struct Estimate_Direct {
 	static constexpr Kind KIND{23};
 	static constexpr const char* NAME = "estimate_direct";

@@ -50,7 +50,9 @@ void Writer::put(const Camera& camera) {
 }
 void Writer::put(const Render_Settings& s) {
 	(*this)(s.width, s.height, s.samples, s.max_depth, s.seed, s.light_sampling, s.russian_roulette);
-	(*this)(uint32_t(s.sampler), uint32_t(s.integrator), uint32_t(s.light_choice));
+}
+void Writer::put(const Estimator_Choice& e) {
+	(*this)(e.integrator, uint32_t(e.sampler), uint32_t(e.light_choice));
 }
 void Writer::put(const Ray& ray) {
 	(*this)(ray.point, ray.dir, ray.dist_bounds, ray.depth);
@@ -159,13 +161,14 @@ void Reader::get(Camera& camera) {
 }
 void Reader::get(Render_Settings& s) {
 	(*this)(s.width, s.height, s.samples, s.max_depth, s.seed, s.light_sampling, s.russian_roulette);
-	uint32_t sampler = 0, integrator = 0, light_choice = 0;
-	(*this)(sampler, integrator, light_choice);
+}
+void Reader::get(Estimator_Choice& e) {
+	uint32_t sampler = 0, light_choice = 0;
+	(*this)(e.integrator, sampler, light_choice); // an integrator's name is checked where it is used
 	if (sampler > uint32_t(Sampler::sobol)) throw Malformed("an unknown sampler " + std::to_string(sampler));
-	if (integrator > uint32_t(Integrator::nee)) throw Malformed("an unknown integrator " + std::to_string(integrator));
 	if (light_choice > uint32_t(Light_Choice::tree))
 		throw Malformed("an unknown light choice " + std::to_string(light_choice));
-	s.sampler = Sampler(sampler), s.integrator = Integrator(integrator), s.light_choice = Light_Choice(light_choice);
+	e.sampler = Sampler(sampler), e.light_choice = Light_Choice(light_choice);
 }
 void Reader::get(Ray& ray) {
 	(*this)(ray.point, ray.dir, ray.dist_bounds, ray.depth);

@@ -73,6 +73,7 @@ private:
 	void put(const RNG_State& rng);
 	void put(const Camera& camera);
 	void put(const Render_Settings& settings);
+	void put(const Estimator_Choice& estimator);
 	void put(const Ray& ray);
 	void put(const Trace& trace);
 	void put(const Tri_Mesh_Vert& vertex);
@@ -155,6 +156,7 @@ private:
 	void get(RNG_State& rng);
 	void get(Camera& camera);
 	void get(Render_Settings& settings);
+	void get(Estimator_Choice& estimator);
 	void get(Ray& ray);
 	void get(Trace& trace);
 	void get(Tri_Mesh_Vert& vertex);

@@ -26,7 +26,7 @@ release=$tmp/release
 # No reference source: no reference/ folder, and no line of reference code that the stubs lack.
 [ ! -e "$release/reference" ] || fail "the release has a reference/ folder"
 manifest=$tmp/objects/shipped_compiled.txt
-grep -q '^framework_sealed framework/scene/lights.cpp$' "$manifest" && grep -q '^integrator_nee ' "$manifest" &&
+grep -q '^framework_sealed framework/scene/lights.cpp$' "$manifest" && grep -q '^integrators_beyond_task4 ' "$manifest" &&
 	grep -q '^accelerator_fast framework/accel/fast/wide_bvh.h$' "$manifest" ||
 	fail "$manifest does not list the framework's shipped-compiled sources: this check would see nothing"
 while read -r library source; do

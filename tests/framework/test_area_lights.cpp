@@ -6,6 +6,7 @@
 // sample_point draws on a light of few triangles and of many (chi-square over its area).
 #include "cap_chi2.h"
 #include "error.h"
+#include "estimator.h"
 #include "light_closed_forms.h"
 #include "light_scenes.h"
 #include "pathtracer.h"
@@ -226,11 +227,11 @@ TEST_CASE("sampled light directions have a finite positive density and cover the
 	}
 }
 
-// Settings that choose every light equally often (Light_Choice::uniform).
-Render_Settings uniform_choice() {
-	Render_Settings settings;
-	settings.light_choice = Light_Choice::uniform;
-	return settings;
+// A path tracer that chooses every light equally often (Light_Choice::uniform).
+Pathtracer uniform_choice(const Scene& scene) {
+	Estimator_Choice estimator;
+	estimator.light_choice = Light_Choice::uniform;
+	return Pathtracer(scene, Render_Settings{}, View::path, estimator);
 }
 
 TEST_CASE("with an environment and an emissive sphere, each is chosen half the time", "[area_lights]") {
@@ -244,7 +245,7 @@ TEST_CASE("with an environment and an emissive sphere, each is chosen half the t
 	view.ring_edges = whole_sphere_edges(1.0, 3.0);
 	view.silhouette = std::sqrt(1.0 - 1.0 / 9.0);
 	view.sectors = 60;
-	Pathtracer pt(view.scene, uniform_choice());
+	Pathtracer pt = uniform_choice(view.scene);
 	REQUIRE(pt.has_lights());
 
 	SECTION("the density is the average of the two densities") {
@@ -276,7 +277,7 @@ TEST_CASE("with two emissive objects, each is chosen half the time", "[area_ligh
 	view.ring_edges = whole_sphere_edges(1.0, 3.0);
 	view.silhouette = std::sqrt(1.0 - 1.0 / 9.0);
 	view.sectors = 80;
-	Pathtracer pt(view.scene, uniform_choice());
+	Pathtracer pt = uniform_choice(view.scene);
 
 	SECTION("the density is the average of the two densities") {
 		RNG rng(6);

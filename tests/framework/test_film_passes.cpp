@@ -3,6 +3,7 @@
 // exactly, and merging them gives the single render's film up to the order of its sums, within the
 // bound below. Bad sets of passes are refused with the file named.
 #include "error.h"
+#include "estimator.h"
 #include "film_file.h"
 #include "image_io.h"
 #include "render.h"
@@ -24,10 +25,9 @@ constexpr double RESIDUAL = 0x1p-48; // a double stored as two floats, hi + lo, 
 Render_Settings small(const Scene& scene) {
 	Render_Settings settings = scene.settings;
 	settings.width = 12, settings.height = 9, settings.samples = 11, settings.seed = 5, settings.max_depth = 6;
-	settings.sampler = Sampler::sobol;
-	settings.integrator = Integrator::nee;
 	return settings;
 }
+const Estimator_Choice SOBOL_NEE{"nee", Sampler::sobol};
 
 Film render_pass(const Pathtracer& pt, uint32_t pass, uint32_t passes) {
 	Render_Options options;
@@ -56,7 +56,7 @@ Bound summation_order_bound(const Pixel_Stats& p, int c, uint32_t passes) {
 
 TEST_CASE("N passes draw every sample of the render once: their counts add up to the render's") {
 	Scene scene = load_scene("scenes/cornell_box.json");
-	Pathtracer pt(scene, small(scene));
+	Pathtracer pt(scene, small(scene), View::path, SOBOL_NEE);
 	Film whole = render_pass(pt, 1, 1);
 	std::vector<uint32_t> counts(whole.pixels.size(), 0);
 	for (uint32_t pass = 1; pass <= 4; pass++) {
@@ -71,7 +71,7 @@ TEST_CASE("N passes draw every sample of the render once: their counts add up to
 
 TEST_CASE("a film file keeps each pixel's count exactly and its mean, m2, m3 and m4 to 2^-48") {
 	Scene scene = load_scene("scenes/cornell_box.json");
-	Film film = render_pass(Pathtracer(scene, small(scene)), 2, 3);
+	Film film = render_pass(Pathtracer(scene, small(scene), View::path, SOBOL_NEE), 2, 3);
 	Temp_Dir dir;
 	write_film(dir.file("pass.exr"), film, Film_Origin{"cornell", 5, 11, 2, 3});
 	Film_File read = read_film(dir.file("pass.exr"));
@@ -99,7 +99,7 @@ TEST_CASE("a film file keeps each pixel's count exactly and its mean, m2, m3 and
 TEST_CASE("merging the passes' film files, in any order, gives the single render up to summation order") {
 	Scene scene = load_scene("scenes/cornell_box.json");
 	Render_Settings settings = small(scene);
-	Pathtracer pt(scene, settings);
+	Pathtracer pt(scene, settings, View::path, SOBOL_NEE);
 	Film whole = render_pass(pt, 1, 1);
 	const uint32_t PASSES = 4;
 	Temp_Dir dir;
@@ -132,7 +132,7 @@ TEST_CASE("merging the passes' film files, in any order, gives the single render
 
 TEST_CASE("merging refuses a pass given twice, a missing pass, a pass of another render and a plain image") {
 	Scene scene = load_scene("scenes/cornell_box.json");
-	Pathtracer pt(scene, small(scene));
+	Pathtracer pt(scene, small(scene), View::path, SOBOL_NEE);
 	Temp_Dir dir;
 	std::string one = dir.file("one.exr"), two = dir.file("two.exr"), other = dir.file("other.exr");
 	write_film(one, render_pass(pt, 1, 2), Film_Origin{"cornell", 5, 11, 1, 2});

@@ -145,7 +145,7 @@ quoted handouts/task4_path.md '^their own floor again, with k = 4, 83\); @ keeps
 quoted handouts/task4_path.md 'the offset of §4.2 \(k = @\) only' framework/api/spawn_ray.h 'RAY_EPSILON = @ \* 0x'
 quoted handouts/task4_path.md '\) · k · @$' framework/api/spawn_ray.h 'RAY_EPSILON = [0-9.]+f \* @;'
 quoted handouts/task4_path.md '`ray.depth >= @`' reference/task4_path.cpp 'ROULETTE_DEPTH = @;'
-quoted handouts/task4_path.md '`ray.depth >= @`' framework/render/nee_integrator.cpp 'ROULETTE_DEPTH = @;'
+quoted handouts/task4_path.md '`ray.depth >= @`' framework/render/integrators/nee_integrator.cpp 'ROULETTE_DEPTH = @;'
 quoted handouts/task4_path.md 'allowance of @ \(relative\)' tests/support/film_statistics.h 'FLOAT_SLACK = @;'
 quoted handouts/task4_path.md '\| @ samples for 5 `out_dir`s' tests/task4/test_lambertian.cpp 'samples = @, chunks'
 quoted handouts/task4_path.md 'Šidák over 48 tests at @\)' tests/stress/test_translated_cornell_box.cpp 'sidak\(@, tests\)'

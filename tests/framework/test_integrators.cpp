@@ -12,7 +12,8 @@
 // to e; Owen 1997). So the low-discrepancy image is the mean of R renders with independent seeds
 // (independent scramblings), and its variance is that of the R render means: an honest estimate
 // whatever the sampler does within a render. The graders and the stored references use independent
-// samples for the same reason (Render_Settings' default).
+// samples for the same reason (Estimator_Choice's default).
+#include "estimator.h"
 #include "image_compare.h"
 #include "render.h"
 #include "scene_loader.h"
@@ -42,31 +43,35 @@ std::vector<std::string> shipped_scenes() {
 	return scenes;
 }
 
-// The scene's own settings (depth, roulette) on a small film of its aspect ratio.
-Render_Settings small(const Scene& scene, Integrator integrator, Light_Choice choice, Sampler sampler) {
+// A render: the scene's own settings (depth, roulette) on a small film of its aspect ratio, by an
+// estimator.
+struct Setup {
+	Render_Settings settings;
+	Estimator_Choice estimator;
+};
+
+Setup small(const Scene& scene, const char* integrator, Light_Choice choice, Sampler sampler) {
 	Render_Settings settings = scene.settings;
 	settings.width = WIDTH;
 	settings.height = std::max(1u, uint32_t(std::lround(double(WIDTH) * scene.settings.height / scene.settings.width)));
 	settings.samples = SPP;
 	settings.seed = 1;
-	settings.integrator = integrator;
-	settings.light_choice = choice;
-	settings.sampler = sampler;
-	return settings;
+	return Setup{settings, Estimator_Choice{integrator, sampler, choice}};
 }
 
-Image_Estimate rendered(const Scene& scene, const Render_Settings& settings) {
-	return Image_Estimate::from(render(Pathtracer(scene, settings)));
+Image_Estimate rendered(const Scene& scene, const Setup& setup) {
+	return Image_Estimate::from(render(Pathtracer(scene, setup.settings, View::path, setup.estimator)));
 }
 
 // The mean of REPLICATES renders of SPP / REPLICATES samples with seeds of their own, as an image
 // of REPLICATES "samples": each render's mean is one, with their variance per pixel.
-Image_Estimate replicated(const Scene& scene, Render_Settings settings) {
+Image_Estimate replicated(const Scene& scene, const Setup& setup) {
+	Render_Settings settings = setup.settings;
 	settings.samples = SPP / REPLICATES;
 	std::vector<HDR_Image> means;
 	for (uint32_t r = 0; r < REPLICATES; r++) {
 		settings.seed = 100 + r;
-		means.push_back(render(Pathtracer(scene, settings)).mean());
+		means.push_back(render(Pathtracer(scene, settings, View::path, setup.estimator)).mean());
 	}
 	HDR_Image mean(settings.width, settings.height), variance(settings.width, settings.height);
 	for (size_t i = 0; i < mean.pixels.size(); i++) {
@@ -95,22 +100,22 @@ void check_agree(const Image_Estimate& lab, const Image_Estimate& other, const s
 TEST_CASE("every estimator renders the same image of every shipped scene", "[integrators]") {
 	for (const std::string& file : shipped_scenes()) {
 		Scene scene = load_scene(file);
-		Image_Estimate lab = rendered(scene, small(scene, Integrator::mixture, Light_Choice::uniform, Sampler::independent));
-		check_agree(lab, rendered(scene, small(scene, Integrator::nee, Light_Choice::power, Sampler::independent)),
+		Image_Estimate lab = rendered(scene, small(scene, "mixture", Light_Choice::uniform, Sampler::independent));
+		check_agree(lab, rendered(scene, small(scene, "nee", Light_Choice::power, Sampler::independent)),
 		            file + ": next-event estimation with MIS, lights chosen by power");
-		check_agree(lab, rendered(scene, small(scene, Integrator::mixture, Light_Choice::power, Sampler::independent)),
+		check_agree(lab, rendered(scene, small(scene, "mixture", Light_Choice::power, Sampler::independent)),
 		            file + ": the mixture, lights chosen by power");
-		check_agree(lab, rendered(scene, small(scene, Integrator::nee, Light_Choice::uniform, Sampler::independent)),
+		check_agree(lab, rendered(scene, small(scene, "nee", Light_Choice::uniform, Sampler::independent)),
 		            file + ": next-event estimation with MIS, lights chosen uniformly");
-		check_agree(lab, rendered(scene, small(scene, Integrator::nee, Light_Choice::tree, Sampler::independent)),
+		check_agree(lab, rendered(scene, small(scene, "nee", Light_Choice::tree, Sampler::independent)),
 		            file + ": next-event estimation with MIS, lights chosen by the light tree");
-		check_agree(lab, rendered(scene, small(scene, Integrator::mixture, Light_Choice::tree, Sampler::independent)),
+		check_agree(lab, rendered(scene, small(scene, "mixture", Light_Choice::tree, Sampler::independent)),
 		            file + ": the mixture, lights chosen by the light tree");
-		check_agree(lab, replicated(scene, small(scene, Integrator::nee, Light_Choice::power, Sampler::sobol)),
+		check_agree(lab, replicated(scene, small(scene, "nee", Light_Choice::power, Sampler::sobol)),
 		            file + ": next-event estimation with MIS and low-discrepancy samples (16 renders)");
-		check_agree(lab, replicated(scene, small(scene, Integrator::nee, Light_Choice::tree, Sampler::sobol)),
+		check_agree(lab, replicated(scene, small(scene, "nee", Light_Choice::tree, Sampler::sobol)),
 		            file + ": next-event estimation with MIS, the light tree and low-discrepancy samples (16 renders)");
-		check_agree(lab, replicated(scene, small(scene, Integrator::mixture, Light_Choice::uniform, Sampler::sobol)),
+		check_agree(lab, replicated(scene, small(scene, "mixture", Light_Choice::uniform, Sampler::sobol)),
 		            file + ": the mixture with low-discrepancy samples (16 renders)");
 	}
 }
@@ -119,16 +124,16 @@ TEST_CASE("on 120 small lamps the light tree renders the image that choice by po
 	// The baseline is next-event estimation with lights chosen by power, whose light samples find
 	// the lamps (the lab's estimator's tail, above, is too heavy for a z-test), with 4 x SPP samples.
 	Scene scene = load_scene(std::string("scenes/") + MANY_LIGHTS);
-	Render_Settings baseline = small(scene, Integrator::nee, Light_Choice::power, Sampler::independent);
-	baseline.samples = 4 * SPP;
+	Setup baseline = small(scene, "nee", Light_Choice::power, Sampler::independent);
+	baseline.settings.samples = 4 * SPP;
 	Image_Estimate by_power = rendered(scene, baseline);
-	Render_Settings nee = small(scene, Integrator::nee, Light_Choice::tree, Sampler::independent);
-	nee.samples = 4 * SPP;
+	Setup nee = small(scene, "nee", Light_Choice::tree, Sampler::independent);
+	nee.settings.samples = 4 * SPP;
 	check_agree(by_power, rendered(scene, nee), "next-event estimation with MIS, lights chosen by the light tree");
-	Render_Settings mixture = small(scene, Integrator::mixture, Light_Choice::tree, Sampler::independent);
-	mixture.samples = 4 * SPP;
+	Setup mixture = small(scene, "mixture", Light_Choice::tree, Sampler::independent);
+	mixture.settings.samples = 4 * SPP;
 	check_agree(rendered(scene, mixture), by_power, "the mixture, lights chosen by the light tree");
-	check_agree(by_power, replicated(scene, small(scene, Integrator::nee, Light_Choice::tree, Sampler::sobol)),
+	check_agree(by_power, replicated(scene, small(scene, "nee", Light_Choice::tree, Sampler::sobol)),
 	            "next-event estimation with MIS, the light tree and low-discrepancy samples (16 renders)");
 }
 
@@ -136,12 +141,12 @@ TEST_CASE("the image comparison tells an estimator with a 5 % brighter light apa
 	// The test above can fail: renders of the Cornell box whose light is 5 % brighter are caught, by
 	// either variance estimate.
 	Scene scene = load_scene("scenes/cornell_box.json");
-	Image_Estimate lab = rendered(scene, small(scene, Integrator::mixture, Light_Choice::uniform, Sampler::independent));
+	Image_Estimate lab = rendered(scene, small(scene, "mixture", Light_Choice::uniform, Sampler::independent));
 	for (Material& material : scene.materials) material.emission *= 1.05f;
 	Image_Comparison independent =
-		compare_estimators(lab, rendered(scene, small(scene, Integrator::nee, Light_Choice::power, Sampler::independent)));
+		compare_estimators(lab, rendered(scene, small(scene, "nee", Light_Choice::power, Sampler::independent)));
 	Image_Comparison low_discrepancy =
-		compare_estimators(lab, replicated(scene, small(scene, Integrator::nee, Light_Choice::power, Sampler::sobol)));
+		compare_estimators(lab, replicated(scene, small(scene, "nee", Light_Choice::power, Sampler::sobol)));
 	INFO("independent samples: " << independent.message << "\nlow-discrepancy samples: " << low_discrepancy.message);
 	CHECK_FALSE(independent.pass);
 	CHECK_FALSE(low_discrepancy.pass);

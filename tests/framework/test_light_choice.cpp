@@ -1,9 +1,10 @@
-// Which light a light sample aims at (framework/api/light_distribution.h): by power, each light in
+// Which light a light sample aims at (framework/scene/light_distribution.h): by power, each light in
 // proportion to the power it emits (chi-square on the choices), with the same probabilities in
 // every density that counts the choice (area_lights_pdf, sample_light, the NEE integrator's weight
 // of a light found by a BSDF sample), whichever the choice (the light tree's own tests:
 // tests/framework/test_light_tree.cpp). That the choice changes only the noise, not the image, is
 // tested on every shipped scene by tests/framework/test_integrators.cpp.
+#include "estimator.h"
 #include "light_distribution.h"
 #include "light_scenes.h"
 #include "nee_integrator.h"
@@ -29,10 +30,10 @@ Scene three_lights() {
 	return scene;
 }
 
-Render_Settings choosing(Light_Choice choice) {
-	Render_Settings settings;
-	settings.light_choice = choice;
-	return settings;
+Pathtracer choosing(const Scene& scene, Light_Choice choice) {
+	Estimator_Choice estimator;
+	estimator.light_choice = choice;
+	return Pathtracer(scene, Render_Settings{}, View::path, estimator);
 }
 
 } // namespace
@@ -92,12 +93,12 @@ TEST_CASE("Light_Choice::uniform, and a scene whose lights changed, choose every
 TEST_CASE("area_lights_pdf weighs each light's density by its probability", "[light_choice]") {
 	Scene scene = three_lights();
 	Light_Choice choice = GENERATE(Light_Choice::power, Light_Choice::tree);
-	Pathtracer pt(scene, choosing(choice));
+	Pathtracer pt = choosing(scene, choice);
 	Vec3 from{0.1f, 0.0f, 0.2f};
 	RNG rng(5);
 	for (int k = 0; k < 1000; k++) {
 		Vec3 dir = pt.sample_area_lights(rng, from);
-		const Light_Distribution& lights = pt.light_distribution;
+		const Light_Distribution& lights = pt.estimator().lights;
 		double expected = lights.probability(0, from) * scene.area_lights.pdf(0, from, dir) +
 		                  lights.probability(1, from) * scene.area_lights.pdf(1, from, dir) +
 		                  lights.probability(2, from) / (4.0 * M_PI);
@@ -113,7 +114,7 @@ TEST_CASE("sample_light's density is the NEE integrator's density of the point i
 	// density there must be the sample's.
 	Scene scene = three_lights();
 	Light_Choice choice = GENERATE(Light_Choice::uniform, Light_Choice::power, Light_Choice::tree);
-	Pathtracer pt(scene, choosing(choice));
+	Pathtracer pt = choosing(scene, choice);
 	Vec3 from{0.1f, 0.0f, 0.2f};
 	RNG rng(9);
 	size_t checked = 0;

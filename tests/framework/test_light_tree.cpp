@@ -7,6 +7,7 @@
 // choices is tested by tests/framework/test_integrators.cpp; that they do not depend on the
 // threads, by tests/framework/test_render.cpp.
 #include "light_bounds.h"
+#include "estimator.h"
 #include "light_distribution.h"
 #include "light_scenes.h"
 #include "render.h"
@@ -192,11 +193,11 @@ TEST_CASE("with one light the light tree renders what choice by power renders, b
 		Render_Settings settings = scene.settings;
 		settings.width = settings.height = 16;
 		settings.samples = 4;
-		settings.integrator = Integrator::nee;
-		settings.light_choice = Light_Choice::power;
-		Film by_power = render(Pathtracer(scene, settings));
-		settings.light_choice = Light_Choice::tree;
-		Film by_tree = render(Pathtracer(scene, settings));
+		Estimator_Choice estimator{"nee"};
+		estimator.light_choice = Light_Choice::power;
+		Film by_power = render(Pathtracer(scene, settings, View::path, estimator));
+		estimator.light_choice = Light_Choice::tree;
+		Film by_tree = render(Pathtracer(scene, settings, View::path, estimator));
 		CAPTURE(file);
 		for (size_t i = 0; i < by_power.pixels.size(); i++) {
 			CAPTURE(i);

@@ -1,9 +1,11 @@
-// The low-discrepancy numbers of Sampler::sobol (framework/api/rng.h, owen_sobol.h): the samples of a
-// pixel are stratified (the first 2^k of them are a (0,k,2)-net in every 2D draw and one point per
-// interval of 1/2^k in every 1D draw), each sample is uniform over the pixels (so that estimators
-// stay unbiased), and a path's vertices draw from dimensions of their own, never one twice.
+// The low-discrepancy numbers of Sampler::sobol (framework/render/sampler.h, owen_sobol.h): the
+// samples of a pixel are stratified (the first 2^k of them are a (0,k,2)-net in every 2D draw and
+// one point per interval of 1/2^k in every 1D draw), each sample is uniform over the pixels (so
+// that estimators stay unbiased), and a path's vertices draw from dimensions of their own, never
+// one twice.
 #include "owen_sobol.h"
 #include "rng.h"
+#include "sampler.h"
 #include "statistics.h"
 
 #include "lab_catch2.h"
@@ -23,7 +25,7 @@ constexpr size_t CHI2_TESTS = 3; // this file's chi-square tests share ALPHA (Š
 std::vector<Vec2> pixel_points(uint64_t seed, uint64_t pixel, uint32_t n, uint32_t dimension, bool two_d) {
 	std::vector<Vec2> points;
 	for (uint32_t s = 0; s < n; s++) {
-		RNG rng = RNG::for_sample(seed, pixel, s, Sampler::sobol);
+		RNG rng = generator_for_sample(seed, pixel, s, Sampler::sobol);
 		for (uint32_t d = 0; d < dimension; d++) rng.unit();
 		points.push_back(two_d ? rng.unit2() : Vec2{rng.unit(), 0.5f});
 	}
@@ -81,7 +83,7 @@ TEST_CASE("Sampler::sobol: a sample's point is uniform over the pixels (chi-squa
 	// unbiased. Sample 5, dimension 2, over 100000 pixels.
 	std::vector<size_t> cells;
 	for (uint64_t pixel = 0; pixel < 100000; pixel++) {
-		RNG rng = RNG::for_sample(3, pixel, 5, Sampler::sobol);
+		RNG rng = generator_for_sample(3, pixel, 5, Sampler::sobol);
 		rng.unit2();
 		rng.unit();
 		Vec2 p = rng.unit2();
@@ -97,7 +99,7 @@ TEST_CASE("Sampler::sobol: two dimensions of one sample are independent (chi-squ
 	// dimension 4's x, sample 9, over 100000 pixels, on a 16 x 16 grid.
 	std::vector<size_t> cells;
 	for (uint64_t pixel = 0; pixel < 100000; pixel++) {
-		RNG rng = RNG::for_sample(8, pixel, 9, Sampler::sobol);
+		RNG rng = generator_for_sample(8, pixel, 9, Sampler::sobol);
 		rng.unit();
 		float a = rng.unit();
 		rng.unit2();
@@ -113,7 +115,7 @@ TEST_CASE("Sampler::sobol: two dimensions of one sample are independent (chi-squ
 TEST_CASE("Sampler::sobol: draws past the low-discrepancy dimensions are independent and uniform", "[sobol]") {
 	std::vector<size_t> cells;
 	for (uint64_t pixel = 0; pixel < 1000; pixel++) {
-		RNG rng = RNG::for_sample(4, pixel, 0, Sampler::sobol);
+		RNG rng = generator_for_sample(4, pixel, 0, Sampler::sobol);
 		rng.begin_vertex(1000); // far past owen_sobol::LOW_DISCREPANCY_DIMENSIONS
 		for (int i = 0; i < 100; i++) cells.push_back(size_t(rng.unit() * 100.0f));
 	}
@@ -126,7 +128,7 @@ TEST_CASE("RNG::begin_vertex: a vertex's draws start at its own dimension, and n
 	// The first draw at vertex 1 is dimension 1 + DIMENSIONS_PER_VERTEX, however few numbers the
 	// camera and vertex 0 drew; if vertex 0 drew more than its share, vertex 1 continues after them.
 	auto draws = [](uint32_t at_vertex_0, uint32_t at_vertex_1) {
-		RNG rng = RNG::for_sample(1, 2, 3, Sampler::sobol);
+		RNG rng = generator_for_sample(1, 2, 3, Sampler::sobol);
 		std::vector<uint32_t> values{rng.integer()}; // the camera's dimension 0
 		rng.begin_vertex(0);
 		for (uint32_t i = 0; i < at_vertex_0; i++) values.push_back(rng.integer());
@@ -145,7 +147,7 @@ TEST_CASE("RNG::begin_vertex: a vertex's draws start at its own dimension, and n
 TEST_CASE("Sampler::sobol: integer(n) is in [0, n) and coin_flip follows p", "[sobol]") {
 	size_t heads = 0, n = 4096;
 	for (uint32_t s = 0; s < n; s++) {
-		RNG rng = RNG::for_sample(2, 7, s, Sampler::sobol);
+		RNG rng = generator_for_sample(2, 7, s, Sampler::sobol);
 		uint32_t k = rng.integer(3);
 		REQUIRE(k < 3);
 		heads += rng.coin_flip(0.25f);

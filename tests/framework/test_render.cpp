@@ -1,6 +1,7 @@
 // Rendering (framework/render/render.h) and the film (framework/film/film.h): a render is a pure function of
 // (scene, settings, seed), whatever the threads and tile order; pixels keep an exact mean and
 // variance; non-finite samples are counted, never averaged.
+#include "estimator.h"
 #include "progressive_render.h"
 #include "render.h"
 #include "scene_loader.h"
@@ -36,12 +37,13 @@ Scene sphere_scene() {
 }
 
 Film render_with(const Scene& scene, View view, Render_Options options, uint64_t seed = 7,
-                 Sampler sampler = Sampler::independent, Integrator integrator = Integrator::mixture) {
+                 Sampler sampler = Sampler::independent, const std::string& integrator = "mixture") {
 	Render_Settings settings = scene.settings;
 	settings.seed = seed;
-	settings.sampler = sampler;
-	settings.integrator = integrator;
-	return render(Pathtracer(scene, settings, view), options);
+	Estimator_Choice estimator;
+	estimator.sampler = sampler;
+	estimator.integrator = integrator;
+	return render(Pathtracer(scene, settings, view, estimator), options);
 }
 
 Render_Options threads_and_tiles(uint32_t threads, uint32_t tile_size, bool shuffle = false) {
@@ -84,8 +86,8 @@ TEST_CASE("render is bit-identical for any number of threads, tile size and tile
 	Scene scene = sphere_scene();
 	View view = GENERATE(View::direction, View::path);
 	Sampler sampler = GENERATE(Sampler::independent, Sampler::sobol);
-	Integrator integrator = GENERATE(Integrator::mixture, Integrator::nee);
-	CAPTURE(view_name(view), sampler_name(sampler), integrator == Integrator::nee);
+	std::string integrator = GENERATE("mixture", "nee");
+	CAPTURE(view_name(view), sampler_name(sampler), integrator);
 	Film reference = render_with(scene, view, threads_and_tiles(1, 16), 7, sampler, integrator);
 	require_random_pixels(reference);
 
@@ -107,16 +109,15 @@ TEST_CASE("a render whose lights the light tree chooses is bit-identical for any
 	Scene scene = load_scene("scenes/many_lights.json");
 	Render_Settings& settings = scene.settings;
 	settings.width = 24, settings.height = 15, settings.samples = 4, settings.seed = 3;
-	settings.integrator = Integrator::nee;
-	settings.light_choice = Light_Choice::tree;
-	Sampler sampler = GENERATE(Sampler::independent, Sampler::sobol);
-	settings.sampler = sampler;
-	CAPTURE(sampler_name(sampler));
-	Film reference = render(Pathtracer(scene, settings), threads_and_tiles(1, 16));
+	Estimator_Choice estimator{"nee"};
+	estimator.light_choice = Light_Choice::tree;
+	estimator.sampler = GENERATE(Sampler::independent, Sampler::sobol);
+	CAPTURE(sampler_name(estimator.sampler));
+	Film reference = render(Pathtracer(scene, settings, View::path, estimator), threads_and_tiles(1, 16));
 	require_random_pixels(reference);
 	for (Render_Options options : {threads_and_tiles(2, 5), threads_and_tiles(0, 3, true)}) {
 		INFO("threads " << options.threads << ", tile size " << options.tile_size);
-		CHECK(first_difference(reference, render(Pathtracer(scene, settings), options)) == -1);
+		CHECK(first_difference(reference, render(Pathtracer(scene, settings, View::path, estimator), options)) == -1);
 	}
 }
 
@@ -278,8 +279,9 @@ TEST_CASE("A film grown sample range by sample range equals the render of all it
 	for (Sampler sampler : {Sampler::independent, Sampler::sobol}) {
 		Render_Settings settings = scene.settings;
 		settings.samples = 7;
-		settings.sampler = sampler;
-		Pathtracer pathtracer(scene, settings, View::path);
+		Estimator_Choice estimator;
+		estimator.sampler = sampler;
+		Pathtracer pathtracer(scene, settings, View::path, estimator);
 		Film whole = render(pathtracer);
 		Film grown(settings.width, settings.height);
 		uint32_t first = 0;
@@ -311,8 +313,9 @@ TEST_CASE("A progressive render hands on, batch after batch, render()'s film wit
 	Scene scene = sphere_scene();
 	Render_Settings settings = scene.settings;
 	settings.samples = 9;
-	settings.sampler = Sampler::sobol;
-	Pathtracer pathtracer(scene, settings, View::path);
+	Estimator_Choice estimator;
+	estimator.sampler = Sampler::sobol;
+	Pathtracer pathtracer(scene, settings, View::path, estimator);
 	for (uint32_t threads : {1u, 3u}) {
 		Progressive_Options options;
 		options.render.threads = threads;
@@ -324,7 +327,8 @@ TEST_CASE("A progressive render hands on, batch after batch, render()'s film wit
 			counts.push_back(frame.samples);
 			Render_Settings partial = settings;
 			partial.samples = frame.samples;
-			Film_Frame expected = Film_Frame::from(render(Pathtracer(scene, partial, View::path)), frame.samples, 0.0);
+			Film_Frame expected =
+				Film_Frame::from(render(Pathtracer(scene, partial, View::path, estimator)), frame.samples, 0.0);
 			for (size_t i = 0; i < expected.non_finite.size(); i++) {
 				INFO("frame of " << frame.samples << " samples, pixel " << i << ", " << threads << " threads");
 				REQUIRE(frame.estimate.samples[i] == frame.samples);

@@ -83,6 +83,16 @@ TEST_CASE("machine code, data run as code and framework functions of its own ear
 	require_nothing_earned(grades[7], "defines global names that are not task 7");
 }
 
+TEST_CASE("an integrator named as the framework's own, to render instead of it, earns nothing", "[security][whole]") {
+	Temp_Dir dir;
+	std::string hostile = hostile_source("task6_integrator_named_as_framework.cpp", dir.path() / "out",
+	                                     {{"@STUB_TASK6@", read_file("student/task6_direct_lighting.cpp")}});
+	std::map<int, Grade> grades = grade_submission(dir, {{6, hostile}});
+	CHECK(grades[6].built);
+	CHECK(grades[6].points == 0.0);
+	require_nothing_earned(grades[6], "SIGABRT");
+}
+
 TEST_CASE("becoming another program, or seeing what the grading built for an earlier task, earns nothing",
           "[security][whole]") {
 	Temp_Dir dir;

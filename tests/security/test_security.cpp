@@ -292,7 +292,7 @@ TEST_CASE("a task-4 file whose shade() is the framework's NEE integrator earns n
 	// What the file's honest Lambertian BSDF earns, with the stub's shade(), is the most it may earn.
 	Temp_Dir dir;
 	std::string source = hostile_source("task4_shade_by_nee_integrator.cpp", dir.path() / "out");
-	std::string by_nee = "return nee_integrator().radiance(*this, rng, camera_ray);";
+	std::string by_nee = "return integrator_row(\"--integrator\", \"nee\").integrator.radiance(*this, rng, camera_ray);";
 	size_t at = source.find(by_nee);
 	REQUIRE(at != std::string::npos);
 	std::string honest = source;
@@ -303,5 +303,5 @@ TEST_CASE("a task-4 file whose shade() is the framework's NEE integrator earns n
 	CHECK(hostile.built);
 	CHECK(bsdf_only.passed > 0);
 	CHECK(hostile.passed <= bsdf_only.passed);
-	CHECK_THAT(hostile.messages, contains_text("not part of a program built with your task 4"));
+	CHECK_THAT(hostile.messages, contains_text("--integrator: expected mixture, got 'nee'"));
 }

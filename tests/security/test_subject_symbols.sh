@@ -4,8 +4,8 @@
 #   - the fast accelerator (framework/accel/fast/: its own triangle and box tests and traversal)
 #     answers tasks 2 and 3: not in their subjects, which use the plain accelerator (task 3's
 #     BVH::hit);
-#   - the NEE integrator (framework/render/nee_integrator.cpp, an estimator of task 4's image)
-#     answers task 4: not in task 4's subjects, which link framework/render/no_nee_integrator.cpp.
+#   - the NEE integrator (framework/render/integrators/nee_integrator.cpp, an estimator of task 4's
+#     image) answers task 4: not in task 4's subjects, which have task 4's integrator alone.
 # (The area lights' geometry and the light sampling task 6 calls, shipped compiled too, compute no
 # task's answer: they are the API the tasks are written against.)
 # Each object a program links leaves its source file's name in the program's symbol table (a FILE

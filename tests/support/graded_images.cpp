@@ -1,6 +1,7 @@
 #include "graded_images.h"
 
 #include "error.h"
+#include "estimator.h"
 #include "image_io.h"
 #include "scene_loader.h"
 #include "sha256.h"
@@ -13,7 +14,7 @@ const std::vector<Graded_Scene>& graded_scenes() {
 		{"eye_bunny", View::eye_light},        // tasks 1-3
 		{"cornell_diffuse", View::path},       // task 4
 		{"glass_balls", View::path},           // task 5
-		{"cornell_small_light", View::path, {Integrator::mixture, Integrator::nee}}, // task 6 and its extension
+		{"cornell_small_light", View::path, {"mixture", "nee"}}, // task 6 and its extension
 		{"env_overcast", View::path},          // task 7
 	};
 	return scenes;
@@ -85,10 +86,6 @@ Film render_graded(const Graded_Scene& graded, const Scene& scene, uint32_t samp
 }
 
 namespace {
-const char* integrator_name(Integrator integrator) {
-	return integrator == Integrator::nee ? "nee" : "mixture";
-}
-
 nlohmann::ordered_json read_record(const Graded_Scene& scene) {
 	std::string record_file = reference_file(scene.name, ".json");
 	std::ifstream in(record_file);
@@ -97,16 +94,17 @@ nlohmann::ordered_json read_record(const Graded_Scene& scene) {
 }
 } // namespace
 
-Image_Calibration read_calibration(const Graded_Scene& scene, const Render_Settings& grader) {
+Image_Calibration read_calibration(const Graded_Scene& scene, const Render_Settings& grader,
+                                   const std::string& integrator) {
 	std::string record_file = reference_file(scene.name, ".json");
 	verify_checksum(record_file);
 	nlohmann::ordered_json record = read_record(scene);
 	for (const auto& entry : record.value("outliers", nlohmann::ordered_json::array())) {
-		if (entry.at("integrator") != integrator_name(grader.integrator) || entry.at("samples") != grader.samples) continue;
+		if (entry.at("integrator") != integrator || entry.at("samples") != grader.samples) continue;
 		return Image_Calibration{entry.at("renders"), entry.at("outliers"), entry.at("z_critical")};
 	}
 	throw Input_Error(record_file + ": no outlier counts of renders with " + std::to_string(grader.samples) +
-	                  " samples and --integrator " + integrator_name(grader.integrator) + "; run `./lab references`");
+	                  " samples and --integrator " + integrator + "; run `./lab references`");
 }
 
 Image_Estimate read_reference(const Graded_Scene& scene, const Render_Settings& grader) {
@@ -146,19 +144,18 @@ void count_reference_outliers(const Graded_Scene& scene, const std::function<voi
 		                        read_image(reference_file(scene.name, "_m4.exr")), record.at("spp"));
 	nlohmann::ordered_json counts = nlohmann::ordered_json::array();
 	size_t done = 0, total = OUTLIER_RENDERS * scene.integrators.size();
-	for (Integrator integrator : scene.integrators) {
+	for (const std::string& integrator : scene.integrators) {
 		Render_Settings settings = loaded.settings;
-		settings.integrator = integrator;
 		uint64_t outliers = 0;
 		for (uint32_t r = 0; r < OUTLIER_RENDERS; r++) {
 			Render_Options options;
 			options.threads = 0; // every core
 			settings.seed = OUTLIER_SEED + r;
-			Film film = render(Pathtracer(loaded, settings, scene.view), options);
+			Film film = render(Pathtracer(loaded, settings, scene.view, Estimator_Choice{integrator}), options);
 			outliers += count_outliers(Image_Estimate::from(film, settings.samples), reference);
 			if (progress) progress(++done, total);
 		}
-		counts.push_back({{"integrator", integrator_name(integrator)}, {"samples", settings.samples},
+		counts.push_back({{"integrator", integrator}, {"samples", settings.samples},
 		                  {"renders", OUTLIER_RENDERS}, {"outliers", outliers},
 		                  {"z_critical", outlier_z(size_t(settings.width) * settings.height)}});
 	}
@@ -167,8 +164,9 @@ void count_reference_outliers(const Graded_Scene& scene, const std::function<voi
 }
 
 Reference_Check compare_with_reference(const Graded_Scene& scene, const Film& film, const Render_Settings& settings,
-                                       double alpha) {
-	return compare_with(film, settings, read_reference(scene, settings), read_calibration(scene, settings), alpha);
+                                       const std::string& integrator, double alpha) {
+	return compare_with(film, settings, read_reference(scene, settings), read_calibration(scene, settings, integrator),
+	                    alpha);
 }
 
 Reference_Check compare_with(const Film& film, const Render_Settings& settings, Image_Estimate reference,
@@ -184,5 +182,5 @@ Reference_Check check_against_reference(const Graded_Scene& scene, std::optional
 	Scene loaded = load_graded(scene);
 	uint64_t render_seed = seed.value_or(loaded.settings.seed);
 	Film film = render_graded(scene, loaded, loaded.settings.samples, render_seed, options);
-	return compare_with_reference(scene, film, loaded.settings);
+	return compare_with_reference(scene, film, loaded.settings, "mixture");
 }

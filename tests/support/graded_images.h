@@ -18,8 +18,8 @@
 struct Graded_Scene {
 	std::string name; // scenes/graded/<name>.json
 	View view;        // the eye view for tasks 1-3, which do not shade
-	// The estimators the graders render it with (image_compare.h: their outliers are counted for each).
-	std::vector<Integrator> integrators{Integrator::mixture};
+	// The integrators the graders render it with (image_compare.h: their outliers are counted for each).
+	std::vector<std::string> integrators{"mixture"};
 };
 
 const std::vector<Graded_Scene>& graded_scenes();
@@ -55,7 +55,8 @@ Film render_graded(const Graded_Scene& graded, const Scene& scene, uint32_t samp
 Image_Estimate read_reference(const Graded_Scene& graded, const Render_Settings& grader);
 // The outliers of correct renders with grader's settings and integrator (image_compare.h), from the
 // reference's record; throws with the file name if it has none for them.
-Image_Calibration read_calibration(const Graded_Scene& graded, const Render_Settings& grader);
+Image_Calibration read_calibration(const Graded_Scene& graded, const Render_Settings& grader,
+                                   const std::string& integrator);
 // The reference image and its record without outlier counts (make_references adds them after).
 void write_reference(const Graded_Scene& graded, const Film& film, const Render_Settings& settings);
 // Counts the outliers of OUTLIER_RENDERS renders with the graders' settings for each of the scene's
@@ -69,10 +70,10 @@ struct Reference_Check {
 	uint64_t non_finite = 0;
 	Image_Estimate render, reference; // the images compared
 };
-// `film`, rendered with the scene's `settings` (size, depth, samples), compared with the stored
-// reference at significance alpha (image_compare.h).
+// `film`, rendered with the scene's `settings` (size, depth, samples) and `integrator`, compared
+// with the stored reference at significance alpha (image_compare.h).
 Reference_Check compare_with_reference(const Graded_Scene& graded, const Film& film, const Render_Settings& settings,
-                                       double alpha = IMAGE_ALPHA);
+                                       const std::string& integrator, double alpha = IMAGE_ALPHA);
 // The same against a given reference and its outlier counts (a varied scene's, graded_variation.h).
 Reference_Check compare_with(const Film& film, const Render_Settings& settings, Image_Estimate reference,
                              const Image_Calibration& calibration, double alpha = IMAGE_ALPHA);

@@ -1,6 +1,7 @@
 #include "graded_variation.h"
 
 #include "error.h"
+#include "estimator.h"
 #include "image_io.h"
 #include "render.h"
 #include "scene_loader.h"
@@ -124,11 +125,12 @@ Film merged(const std::vector<Film>& passes, size_t skip) {
 	return film;
 }
 
-Judge_Reference render_reference(const Graded_Scene& graded, const Scene& scene, const Render_Settings& grader) {
+Judge_Reference render_reference(const Graded_Scene& graded, const Scene& scene, const Render_Settings& grader,
+                                 const std::string& integrator) {
 	Render_Settings settings = grader;
 	settings.samples = grader.samples * REFERENCE_SPP_FACTOR;
 	settings.seed = REFERENCE_SEED;
-	Pathtracer pathtracer(scene, settings, graded.view);
+	Pathtracer pathtracer(scene, settings, graded.view, Estimator_Choice{integrator});
 	std::vector<Film> passes;
 	for (uint32_t p = 1; p <= REFERENCE_SPP_FACTOR; p++) {
 		Render_Options options;
@@ -153,7 +155,8 @@ const char* view_word(View view) {
 
 } // namespace
 
-Judge_Reference judge_reference(const Graded_Scene& graded, const Json& description, const Render_Settings& grader) {
+Judge_Reference judge_reference(const Graded_Scene& graded, const Json& description, const Render_Settings& grader,
+                                const std::string& integrator) {
 	// What made it, whose SHA-256 names it in the cache.
 	Json made_of{{"format", 1},
 	             {"scene", description},
@@ -162,7 +165,7 @@ Judge_Reference judge_reference(const Graded_Scene& graded, const Json& descript
 	             {"height", grader.height},
 	             {"max_depth", grader.max_depth},
 	             {"samples", grader.samples},
-	             {"integrator", grader.integrator == Integrator::nee ? "nee" : "mixture"},
+	             {"integrator", integrator},
 	             {"reference_factor", REFERENCE_SPP_FACTOR},
 	             {"reference_seed", REFERENCE_SEED}};
 	const char* cache_dir = std::getenv("LAB_REFERENCE_CACHE");
@@ -177,7 +180,7 @@ Judge_Reference judge_reference(const Graded_Scene& graded, const Json& descript
 		return kept;
 	}
 	Scene scene = load_scene(description, graded_scene_file(graded.name));
-	Judge_Reference made = render_reference(graded, scene, grader);
+	Judge_Reference made = render_reference(graded, scene, grader, integrator);
 	if (cache.empty()) return made;
 	// Written under names of this process's own, then renamed into place, the record last: a reader
 	// sees a whole entry or none, whatever other judges write at the same time.

@@ -36,4 +36,4 @@ struct Judge_Reference {
 	Image_Calibration calibration;
 };
 Judge_Reference judge_reference(const Graded_Scene& graded, const nlohmann::ordered_json& description,
-                                const Render_Settings& grader);
+                                const Render_Settings& grader, const std::string& integrator);

@@ -14,7 +14,7 @@ Furnace_Render render_square(const Scene& scene, uint32_t size, uint32_t spp, ui
 	settings.samples = spp;
 	settings.max_depth = max_depth;
 	settings.seed = seed;
-	Film film = judge::ask(protocol::Render{scene, settings, View::path, 2});
+	Film film = judge::ask(protocol::Render{scene, settings, Estimator_Choice{}, View::path, 2});
 	settings.seed = seed ^ REFERENCE_STREAM;
 	Render_Options options;
 	options.threads = 2;

@@ -53,22 +53,21 @@ void check_renders_like_reference(const Image_Test& test) {
 	}
 	Scene scene = varied ? load_scene(*varied, graded_scene_file(graded.name)) : load_graded(graded);
 	Render_Settings settings = scene.settings;
-	settings.integrator = test.integrator;
 	if (judge::secret_seed()) {
 		RNG rng = judge::case_generator("render " + test.name);
 		settings.seed = uint64_t(rng.integer()) << 32 | rng.integer();
 	}
-	Film film = judge::ask(protocol::Render{scene, settings, graded.view, 2});
+	Film film = judge::ask(protocol::Render{scene, settings, Estimator_Choice{test.integrator}, graded.view, 2});
 	Reference_Check check = [&] {
-		if (!varied) return compare_with_reference(graded, film, settings, test.alpha);
-		Judge_Reference reference = judge_reference(graded, *varied, settings);
+		if (!varied) return compare_with_reference(graded, film, settings, test.integrator, test.alpha);
+		Judge_Reference reference = judge_reference(graded, *varied, settings, test.integrator);
 		return compare_with(film, settings, std::move(reference.reference), reference.calibration, test.alpha);
 	}();
 	if (report::enabled()) report_images(test.name, check);
 	std::ostringstream render_it;
 	render_it << " Render it: ./lab render-student scenes/graded/" << test.name << ".json"
 	          << (graded.view == View::eye_light ? " --view eye" : "")
-	          << (test.integrator == Integrator::nee ? " --integrator nee" : "")
+	          << (test.integrator == "mixture" ? "" : " --integrator " + test.integrator)
 	          << (varied ? " (the grading seed varied this scene: its camera, materials, lights and the places of its "
 	                       "objects)"
 	                     : "");

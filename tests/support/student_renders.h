@@ -20,7 +20,7 @@ struct Image_Hint {
 // the picture. For the grade report (report_record.h) it also
 // writes the render, the reference and a heat map of the z-scores (z_heat_map.h) as PNGs and
 // attaches them to the test case. With a grading seed the render uses a seed drawn from it.
-// `integrator`: the estimator the render uses (task 6's extension renders with Integrator::nee).
+// `integrator`: the integrator the render uses (task 6's extension renders with "nee").
 // `alpha`: the test case's significance, shared by its z-tests and its bound on the render's noise
 // (image_compare.h); a grader whose checks share one α passes its share.
 // `if_noisy`: what makes renders of this task noisier than the reference's, in the handout's terms.
@@ -28,7 +28,7 @@ struct Image_Test {
 	std::string name, hint;
 	std::vector<Image_Hint> if_failed;
 	std::string if_noisy;
-	Integrator integrator = Integrator::mixture;
+	std::string integrator = "mixture";
 	double alpha = 0.01;
 };
 void check_renders_like_reference(const Image_Test& test);

@@ -15,7 +15,7 @@ Generate_Rays::Answer answer(const Generate_Rays& request) {
 }
 
 Trace_Pixels::Answer answer(const Trace_Pixels& request) {
-	Pathtracer pathtracer(request.scene, request.settings, request.view);
+	Pathtracer pathtracer(request.scene, request.settings, request.view, request.estimator);
 	Trace_Pixels::Answer colours;
 	for (const auto& s : request.samples) {
 		RNG rng = s.rng.restored();
@@ -25,7 +25,7 @@ Trace_Pixels::Answer answer(const Trace_Pixels& request) {
 }
 
 Render::Answer answer(const Render& request) {
-	Pathtracer pathtracer(request.scene, request.settings, request.view);
+	Pathtracer pathtracer(request.scene, request.settings, request.view, request.estimator);
 	Render_Options options;
 	options.threads = std::max(1u, request.threads);
 	return render(pathtracer, options);

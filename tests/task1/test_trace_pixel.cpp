@@ -71,7 +71,7 @@ using Pixel = std::pair<uint32_t, uint32_t>;
 // Samples 0 .. n - 1 of each pixel, seeded as the renderer seeds them (framework/render/render.cpp), from
 // the student's trace_pixel in one request.
 std::vector<std::vector<Sample>> sample_pixels(const Scene& scene, const std::vector<Pixel>& pixels, uint32_t n) {
-	Trace_Pixels request{scene, film_settings(), View::direction, {}};
+	Trace_Pixels request{scene, film_settings(), Estimator_Choice{}, View::direction, {}};
 	uint64_t seed = request.settings.seed;
 	for (auto [x, y] : pixels) {
 		for (uint32_t s = 0; s < n; s++) {

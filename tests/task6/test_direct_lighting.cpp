@@ -121,7 +121,7 @@ void add_blocker(Scene& scene, Vec3 centre, float half_side) {
 // n camera samples of pixel (0, 0), with the film's per-sample RNG, from the student's renderer
 // (trace_pixel with the student's sample_incoming) in one request.
 std::vector<Spectrum> render_samples(const Scene& scene, const Render_Settings& settings, size_t n) {
-	protocol::Trace_Pixels request{scene, settings, View::path, {}};
+	protocol::Trace_Pixels request{scene, settings, Estimator_Choice{}, View::path, {}};
 	for (size_t i = 0; i < n; i++) request.samples.push_back({0, 0, RNG_State::of(RNG::for_sample(settings.seed, 0, i))});
 	return judge::ask(request);
 }

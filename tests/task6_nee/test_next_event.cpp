@@ -13,6 +13,7 @@
 // variance is off by sqrt((κ - 1) / n) relative, κ the samples' kurtosis (the NEE floors' 2.4 and
 // 2.8, measured over 5e4 samples), about 1 % for n >= 5e4, so the standard error by half that.
 #include "direct_lighting_estimators.h"
+#include "estimator.h"
 #include "frame.h"
 #include "light_closed_forms.h"
 #include "light_scenes.h"
@@ -37,9 +38,8 @@ const Vec3 POINT{0.2f, 0.0f, -0.1f};
 const Vec3 NORMAL = glm::normalize(Vec3{0.25f, 1.0f, -0.15f});
 const Vec3 OUT_DIR = glm::normalize(Vec3{-0.3f, 1.0f, 0.4f});
 
-Render_Settings nee_settings(uint64_t seed = 0) {
+Render_Settings seeded_settings(uint64_t seed = 0) {
 	Render_Settings settings;
-	settings.integrator = Integrator::nee;
 	settings.seed = seed;
 	return settings;
 }
@@ -110,10 +110,10 @@ std::vector<double> reference_direct_light(const Pathtracer& pt, const Trace& po
 // n samples of pixel (0, 0) by the reference's NEE integrator (as student_pixel_samples).
 std::vector<double> reference_pixel_samples(const Scene& scene, Render_Settings settings, size_t n) {
 	settings.seed = reference_seed(settings.seed);
-	Pathtracer pt(scene, settings);
+	Pathtracer pt(scene, settings, View::path, Estimator_Choice{"nee"});
 	std::vector<double> values(n);
 	for (size_t i = 0; i < n; i++) {
-		RNG rng = RNG::for_sample(settings.seed, 0, i, settings.sampler);
+		RNG rng = RNG::for_sample(settings.seed, 0, i);
 		values[i] = channel_average(pt.trace_pixel(0, 0, rng));
 	}
 	return values;
@@ -152,7 +152,7 @@ void check_closed_form(const std::vector<double>& student_samples, const std::ve
 
 // A 1 x 1 film that sees only the floor of lit_floor (light_scenes.h).
 Render_Settings one_pixel(uint64_t seed) {
-	Render_Settings settings = nee_settings(seed);
+	Render_Settings settings = seeded_settings(seed);
 	settings.width = settings.height = 1;
 	settings.max_depth = 1; // direct light only
 	return settings;
@@ -166,7 +166,7 @@ TEST_CASE("estimate_direct gives exactly 0 when the shadow ray is blocked", "[id
 	scene.objects = std::move(scene.bvh.primitives); // reopen the committed scene
 	add_object(scene, ceiling_square(0.8f, 0.5f), add_material(scene, diffuse_material(Spectrum{0.0f}), "blocker"));
 	scene.commit();
-	Pathtracer pt(scene, nee_settings());
+	Pathtracer pt(scene, seeded_settings());
 	std::vector<double> values = student_direct_light(pt.scene, pt.settings, surface_point(Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f}), GREY,
 	                                                  Vec3{0.0f, 1.0f, 0.0f}, 20000, 1);
 	size_t nonzero = size_t(std::count_if(values.begin(), values.end(), [](double v) { return v != 0.0; }));
@@ -178,7 +178,7 @@ TEST_CASE("estimate_direct gives exactly 0 when the shadow ray is blocked", "[id
 
 TEST_CASE("estimate_direct gives exactly 0 for a light behind the surface", "[id:t6nee.direct.light-behind][task6_nee][fn:estimate_direct]") {
 	Scene scene = ceiling_light_scene(0.5f, 1.0f);
-	Pathtracer pt(scene, nee_settings());
+	Pathtracer pt(scene, seeded_settings());
 	Vec3 down{0.0f, -1.0f, 0.0f}; // a surface facing away from the light, seen from below
 	std::vector<double> values = student_direct_light(pt.scene, pt.settings, surface_point(Vec3{0.0f}, down), GREY, down, 20000, 2);
 	size_t bad = size_t(std::count_if(values.begin(), values.end(), [](double v) { return v != 0.0; }));
@@ -190,7 +190,7 @@ TEST_CASE("estimate_direct's mean is the light-sampled share the power heuristic
           "[id:t6nee.direct.mean][estimate][task6_nee][fn:estimate_direct]") {
 	// Two-sample z-test against the grader's own light samples, weighted by p_l^2 / (p_l^2 + p_b^2).
 	Scene scene = ceiling_light_scene(0.5f, 1.0f);
-	Pathtracer pt(scene, nee_settings());
+	Pathtracer pt(scene, seeded_settings());
 	Trace point = surface_point(POINT, NORMAL);
 	std::vector<double> student_samples = student_direct_light(pt.scene, pt.settings, point, GREY, OUT_DIR, 100000, 11);
 	std::vector<double> own(100000);
@@ -216,7 +216,7 @@ TEST_CASE("light-sampled and BSDF-sampled shares add up to Lambert's formula",
           "[id:t6nee.direct.lambert][estimate][task6_nee][uses:estimate_direct][uses:power_heuristic]") {
 	SECTION("a square light over a tilted receiver") {
 		Scene scene = ceiling_light_scene(0.5f, 1.0f);
-		Pathtracer pt(scene, nee_settings());
+		Pathtracer pt(scene, seeded_settings());
 		Trace point = surface_point(POINT, NORMAL);
 		double e = closed_form::polygon_irradiance(ceiling_square_corners(0.5f, 1.0f), glm::dvec3(POINT),
 		                                           glm::dvec3(NORMAL), 1.0);
@@ -233,7 +233,7 @@ TEST_CASE("light-sampled and BSDF-sampled shares add up to Lambert's formula",
 		add_object(scene, Sphere{0.5f}, add_material(scene, emitter(Spectrum{1.0f}), "light"),
 		           glm::translate(Mat4{1.0f}, Vec3{0.0f, 2.0f, 0.0f}));
 		scene.commit();
-		Pathtracer pt(scene, nee_settings());
+		Pathtracer pt(scene, seeded_settings());
 		Vec3 normal{std::sin(PI_F / 6.0f), std::cos(PI_F / 6.0f), 0.0f};
 		Trace point = surface_point(Vec3{0.0f}, normal);
 		double expected = RHO * closed_form::sphere_irradiance(0.5, 2.0, std::cos(M_PI / 6.0), 1.0) / M_PI;
@@ -270,7 +270,7 @@ TEST_CASE("under a small light, next-event estimation is less noisy than BSDF sa
 	// Square of half-side 0.1 at height 1 over a point facing it: one-sided z-test of var(BSDF) -
 	// var(NEE) > 0, with the sampling variance of a sample variance, (m4 - s^4) / n.
 	Scene scene = ceiling_light_scene(0.1f, 1.0f);
-	Pathtracer pt(scene, nee_settings());
+	Pathtracer pt(scene, seeded_settings());
 	Trace point = surface_point(Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f});
 	Vec3 up{0.0f, 1.0f, 0.0f};
 	Sample_Moments nee = moments(sum(student_direct_light(pt.scene, pt.settings, point, GREY, up, 100000, 31),
@@ -297,7 +297,7 @@ TEST_CASE("the NEE integrator renders cornell_small_light like its reference ima
 	                  {"estimate_direct", "the light-sampled share and its shadow ray (handout §6.5)."}};
 	test.if_noisy = "Both shares weighted by the power heuristic keep a light sample's weight bounded: f L |cos| w / pdf "
 	                "with w = power_heuristic(light pdf, BSDF pdf) (handout §6.5).";
-	test.integrator = Integrator::nee;
+	test.integrator = "nee";
 	test.alpha = task6_nee::image_test_alpha();
 	check_renders_like_reference(test);
 }

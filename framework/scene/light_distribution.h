@@ -7,28 +7,23 @@
 // Whichever way, the light pdf divides by the probability of the light chosen, so all estimate the
 // same image.
 //
-// Power says how much light a light sends into the scene, not how much reaches a given point: the
-// sky of a scene with a 40 x 40 ground has 38 times the power of scenes/dragon.json's lamp, which
-// lights most of what the camera sees. Chosen purely by power, the lamp got 2.6 % of the samples
-// and its pixels 18 times the variance of uniform choice. So a share UNIFORM_SHARE of the
-// probability is spread evenly (a defensive mixture, Hesterberg 1995): no light is chosen less than
-// half as often as uniform choice would, which bounds the loss to a factor of 2.
-//
-// The tree holds the area lights only: an environment has neither a position nor a direction it
-// faces. pbrt-v4's BVHLightSampler chooses the environment and the tree half the time each, however
-// little the sky lights a point under a lamp. Here the environment's share at a point follows the
-// light each can send there, as Cycles' light tree weighs its background against its local lights:
-// bounds on the irradiance, in one unit: the tree's importance / pi (a one-sided Lambertian
-// emitter of power phi = pi A L causes at most L A / d^2 = phi / (pi d^2)) and the sky's pi times
-// its mean luminance (what a uniform sky of that radiance causes). Half of the share is kept
-// even (the defensive mixture above): the environment's share stays within [1/4, 3/4], so neither
-// side can lose more than a factor of 2 against pbrt-v4's halves. With no area lights it is 1.
+// Why power is mixed with uniform choice, and how the environment shares with the tree: the
+// benchmarks' notes in the instructors' tree, "Choosing a light".
 #include "scene.h"
 
 #include <memory>
 #include <vector>
 
-class Light_Tree; // framework/scene/light_tree.h (framework code, not the student's API)
+// How light sampling chooses among the lights (--light-choice).
+enum class Light_Choice {
+	uniform, // every light equally often
+	power,   // in proportion to the power each light emits
+	tree,    // in proportion to the light each may send to the shading point (light_tree.h)
+};
+
+const char* light_choice_name(Light_Choice choice);
+
+class Light_Tree; // light_tree.h
 
 // The power each light emits, in the order above: an area light pi * area * luminance(emission);
 // the environment pi R^2 times the integral of its luminance over the

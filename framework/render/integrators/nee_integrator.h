@@ -9,12 +9,9 @@
 // seen directly from the camera) counts in full. Every vertex thus sees the lights, where task 4's
 // estimator with task 6's mixture finds them only by continuing the path towards them. It estimates
 // the same image (tests/framework/test_integrators.cpp).
-#include "path_integrator.h"
+// Paths scatter only while depth < max_depth, as in task 4, and are cut by the same Russian
+// roulette; rays are spawned as task 4 spawns them (spawn_ray.h).
 #include "pathtracer.h"
-
-// The estimator (path_integrator.h). Paths scatter only while depth < max_depth, as in task 4, and
-// are cut by the same Russian roulette; rays are spawned as task 4 spawns them (spawn_ray.h).
-const Path_Integrator& nee_integrator();
 
 // The density with which pathtracer.sample_light, called at ray.point, would have chosen what the
 // ray found: the point `hit` of an area light, or the environment's direction ray.dir if it hit

@@ -1,6 +1,7 @@
 #include "nee_integrator.h"
+#include "estimator.h"
 #include "frame.h"
-#include "path_integrator.h"
+#include "integrators.h"
 
 #include <algorithm>
 
@@ -79,22 +80,24 @@ public:
 	}
 };
 
+const Nee_Integrator nee;
+const Integrator_Row row{"nee",
+                         "next-event estimation with MIS: a shadow ray to a light at every bounce "
+                         "(pathtracer_reference's default)",
+                         nee, Light_Choice::tree};
+
 } // namespace
 
 float light_pdf(const Pathtracer& pt, const Ray& ray, const Trace& hit) {
 	const Scene& scene = pt.scene;
+	const Light_Distribution& lights = pt.estimator().lights;
 	if (!hit.hit) {
 		if (!scene.environment) return 0.0f;
-		float chosen = pt.light_distribution.probability(scene.area_lights.count(), ray.point);
+		float chosen = lights.probability(scene.area_lights.count(), ray.point);
 		return chosen * std::visit([&](const auto& env) { return env.pdf(ray.dir); }, *scene.environment);
 	}
 	int light = scene.area_lights.light_of(hit.object);
 	if (light < 0) return 0.0f;
-	return pt.light_distribution.probability(size_t(light), ray.point) *
+	return lights.probability(size_t(light), ray.point) *
 	       scene.area_lights.point_pdf(size_t(light), ray.point, hit.position, hit.normal);
-}
-
-const Path_Integrator& nee_integrator() {
-	static const Nee_Integrator nee;
-	return nee;
 }
