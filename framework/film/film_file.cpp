@@ -1,23 +1,17 @@
 #include "film_file.h"
 #include "error.h"
+#include "exr_encoding.h"
 #include "output_file.h"
 
 // The Debian package ships tinyexr compiled: include declarations only.
 #include <tinyexr.h>
 
 #include <algorithm>
-#include <cstring>
 #include <map>
 #include <memory>
 
 namespace {
 
-// One channel of the file: its name and, per pixel, a float or a 32-bit unsigned integer.
-struct Channel {
-	std::string name;
-	std::vector<float> floats;
-	std::vector<uint32_t> integers;
-};
 
 // A double as two floats, hi + lo.
 float high_part(double x) {
@@ -27,11 +21,11 @@ float low_part(double x) {
 	return float(x - double(float(x)));
 }
 
-std::vector<Channel> channels_of(const Film& film) {
+std::vector<Exr_Channel> channels_of(const Film& film) {
 	const char* rgb[] = {"R", "G", "B"};
-	std::vector<Channel> channels;
+	std::vector<Exr_Channel> channels;
 	auto add_double = [&](const std::string& name, const std::string& residual, int c, glm::dvec3 Pixel_Stats::*field) {
-		Channel hi{name, {}, {}}, lo{residual, {}, {}};
+		Exr_Channel hi{name, {}, {}}, lo{residual, {}, {}};
 		for (const Pixel_Stats& p : film.pixels) {
 			hi.floats.push_back(high_part((p.*field)[c]));
 			lo.floats.push_back(low_part((p.*field)[c]));
@@ -45,7 +39,7 @@ std::vector<Channel> channels_of(const Film& film) {
 		add_double(std::string("m3.") + rgb[c], std::string("m3_residual.") + rgb[c], c, &Pixel_Stats::m3);
 		add_double(std::string("m4.") + rgb[c], std::string("m4_residual.") + rgb[c], c, &Pixel_Stats::m4);
 	}
-	Channel count{"count", {}, {}}, non_finite{"non_finite", {}, {}};
+	Exr_Channel count{"count", {}, {}}, non_finite{"non_finite", {}, {}};
 	for (const Pixel_Stats& p : film.pixels) {
 		count.integers.push_back(p.count);
 		non_finite.integers.push_back(p.non_finite);
@@ -53,7 +47,7 @@ std::vector<Channel> channels_of(const Film& film) {
 	channels.push_back(std::move(count));
 	channels.push_back(std::move(non_finite));
 	// OpenEXR lists channels by name.
-	std::sort(channels.begin(), channels.end(), [](const Channel& a, const Channel& b) { return a.name < b.name; });
+	std::sort(channels.begin(), channels.end(), [](const Exr_Channel& a, const Exr_Channel& b) { return a.name < b.name; });
 	return channels;
 }
 
@@ -62,12 +56,6 @@ std::map<std::string, std::string> attributes_of(const Film_Origin& origin) {
 	        {"lab_seed", std::to_string(origin.seed)},
 	        {"lab_samples", std::to_string(origin.samples)},
 	        {"lab_pass", std::to_string(origin.pass) + "/" + std::to_string(origin.passes)}};
-}
-
-std::string take_message(const char* message) {
-	std::string text = message ? message : "unknown error";
-	if (message) FreeEXRErrorMessage(message);
-	return text;
 }
 
 uint64_t parse_number(const std::string& path, const std::string& name, const std::string& text) {
@@ -110,52 +98,8 @@ Film_Origin origin_of(const std::string& path, const std::map<std::string, std::
 
 void write_film(const std::string& path, const Film& film, const Film_Origin& origin) {
 	if (film.w == 0 || film.h == 0) throw Input_Error(path + ": cannot write an empty film");
-	std::vector<Channel> channels = channels_of(film);
-	std::vector<EXRChannelInfo> infos(channels.size());
-	std::vector<int> types(channels.size());
-	std::vector<unsigned char*> planes(channels.size());
-	for (size_t c = 0; c < channels.size(); c++) {
-		std::strncpy(infos[c].name, channels[c].name.c_str(), sizeof infos[c].name - 1);
-		bool integer = !channels[c].integers.empty();
-		types[c] = integer ? TINYEXR_PIXELTYPE_UINT : TINYEXR_PIXELTYPE_FLOAT;
-		infos[c].pixel_type = types[c];
-		planes[c] = integer ? reinterpret_cast<unsigned char*>(channels[c].integers.data())
-		                    : reinterpret_cast<unsigned char*>(channels[c].floats.data());
-	}
-	std::map<std::string, std::string> attributes = attributes_of(origin);
-	std::vector<EXRAttribute> custom;
-	for (auto& [name, value] : attributes) {
-		EXRAttribute attribute{};
-		std::strncpy(attribute.name, name.c_str(), sizeof attribute.name - 1);
-		std::strcpy(attribute.type, "string");
-		attribute.value = reinterpret_cast<unsigned char*>(value.data());
-		attribute.size = int(value.size());
-		custom.push_back(attribute);
-	}
-
-	EXRHeader header;
-	InitEXRHeader(&header);
-	header.num_channels = int(channels.size());
-	header.channels = infos.data();
-	header.pixel_types = types.data();
-	header.requested_pixel_types = types.data();
-	header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;
-	header.num_custom_attributes = int(custom.size());
-	header.custom_attributes = custom.data();
-	EXRImage image;
-	InitEXRImage(&image);
-	image.num_channels = int(channels.size());
-	image.images = planes.data();
-	image.width = int(film.w);
-	image.height = int(film.h);
-
-	unsigned char* memory = nullptr;
-	const char* message = nullptr;
-	size_t size = SaveEXRImageToMemory(&image, &header, &memory, &message);
-	if (size == 0) throw Input_Error(path + ": cannot encode the film: " + take_message(message));
-	std::string bytes(reinterpret_cast<char*>(memory), size);
-	std::free(memory);
-	write_file(path, bytes);
+	write_file(path, encode_exr(path, "the film", film.w, film.h, channels_of(film), Exr_Compression::zip,
+	                            attributes_of(origin)));
 }
 
 Film_File read_film(const std::string& path) {
@@ -167,7 +111,7 @@ Film_File read_film(const std::string& path) {
 	InitEXRHeader(&header);
 	const char* message = nullptr;
 	if (ParseEXRHeaderFromFile(&header, &version, path.c_str(), &message) != TINYEXR_SUCCESS) {
-		throw Input_Error(path + ": cannot read the film: " + take_message(message));
+		throw Input_Error(path + ": cannot read the film: " + take_exr_message(message));
 	}
 	std::unique_ptr<EXRHeader, int (*)(EXRHeader*)> header_owner(&header, FreeEXRHeader);
 	std::map<std::string, std::string> attributes;
@@ -181,7 +125,7 @@ Film_File read_film(const std::string& path) {
 	EXRImage image;
 	InitEXRImage(&image);
 	if (LoadEXRImageFromFile(&image, &header, path.c_str(), &message) != TINYEXR_SUCCESS) {
-		throw Input_Error(path + ": cannot read the film: " + take_message(message));
+		throw Input_Error(path + ": cannot read the film: " + take_exr_message(message));
 	}
 	std::unique_ptr<EXRImage, int (*)(EXRImage*)> image_owner(&image, FreeEXRImage);
 	if (image.images == nullptr) throw Input_Error(path + ": a film is stored in scanlines, not tiles");

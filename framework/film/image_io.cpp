@@ -1,5 +1,6 @@
 #include "image_io.h"
 #include "error.h"
+#include "exr_encoding.h"
 #include "output_file.h"
 #include "radiance_hdr.h"
 #include "text_file.h"
@@ -11,7 +12,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <vector>
@@ -57,13 +57,6 @@ HDR_Image image_from_floats(const float* data, int w, int h, int channels) {
 	return image;
 }
 
-// tinyexr reports errors through a string it allocates.
-std::string take_exr_message(const char* message) {
-	std::string text = message ? message : "unknown error";
-	if (message) FreeEXRErrorMessage(message);
-	return text;
-}
-
 HDR_Image read_exr(const std::string& path) {
 	float* rgba = nullptr;
 	int w = 0, h = 0;
@@ -79,40 +72,13 @@ HDR_Image read_exr(const std::string& path) {
 // The image as the bytes of an OpenEXR file: 32-bit float channels B, G, R (the order most viewers
 // expect), uncompressed below 16 x 16 pixels and ZIP-compressed above, as tinyexr's SaveEXR writes.
 std::string encode_exr(const std::string& path, const HDR_Image& image) {
-	size_t count = image.pixels.size();
-	std::vector<float> planes[3]; // B, G, R
+	std::vector<Exr_Channel> channels{{"B", {}, {}}, {"G", {}, {}}, {"R", {}, {}}};
 	for (int c = 0; c < 3; c++) {
-		planes[c].resize(count);
-		for (size_t i = 0; i < count; i++) planes[c][i] = image.pixels[i][2 - c];
+		for (const Spectrum& pixel : image.pixels) channels[c].floats.push_back(pixel[2 - c]);
 	}
-	float* plane_pointers[3] = {planes[0].data(), planes[1].data(), planes[2].data()};
-	EXRChannelInfo channels[3]{};
-	std::strcpy(channels[0].name, "B");
-	std::strcpy(channels[1].name, "G");
-	std::strcpy(channels[2].name, "R");
-	int float_type[3] = {TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT};
-
-	EXRHeader header;
-	InitEXRHeader(&header);
-	header.num_channels = 3;
-	header.channels = channels;
-	header.pixel_types = float_type;
-	header.requested_pixel_types = float_type;
-	header.compression_type = image.w < 16 && image.h < 16 ? TINYEXR_COMPRESSIONTYPE_NONE : TINYEXR_COMPRESSIONTYPE_ZIP;
-	EXRImage exr;
-	InitEXRImage(&exr);
-	exr.num_channels = 3;
-	exr.images = reinterpret_cast<unsigned char**>(plane_pointers);
-	exr.width = int(image.w);
-	exr.height = int(image.h);
-
-	unsigned char* memory = nullptr;
-	const char* message = nullptr;
-	size_t size = SaveEXRImageToMemory(&exr, &header, &memory, &message);
-	if (size == 0) throw Input_Error(path + ": cannot encode the EXR image: " + take_exr_message(message));
-	std::string bytes(reinterpret_cast<char*>(memory), size);
-	std::free(memory);
-	return bytes;
+	bool small = image.w < 16 && image.h < 16;
+	return encode_exr(path, "the EXR image", image.w, image.h, channels,
+	                  small ? Exr_Compression::none : Exr_Compression::zip);
 }
 
 } // namespace
