@@ -475,8 +475,8 @@ struct Env_Constant_Queries {
 
 // ---- Every request, once ----
 // The judge asks them (judge.h); the subject answers each with answer(request), which each task's
-// tests/task<N>/subject_answers.h defines; kind_name, kind_functions and the subject's dispatch are
-// made from this list. A new request: its struct above and its answer, nothing else.
+// answers/task<N>.h defines; kind_name, kind_functions and the subject's dispatch are made from
+// this list. A new request: its struct above and its answer, nothing else.
 using Requests = std::tuple<
 	Generate_Rays,
 	Trace_Pixels,

@@ -13,14 +13,14 @@
 #include "wire.h"
 
 // The task functions, per request: each task's answers.
-#include "task1/subject_answers.h"
-#include "task2/subject_answers.h"
-#include "task3/subject_answers.h"
-#include "task4/subject_answers.h"
-#include "task5/subject_answers.h"
-#include "task6/subject_answers.h"
-#include "task6_nee/subject_answers.h"
-#include "task7/subject_answers.h"
+#include "answers/task1.h"
+#include "answers/task2.h"
+#include "answers/task3.h"
+#include "answers/task4.h"
+#include "answers/task5.h"
+#include "answers/task6.h"
+#include "answers/task6_nee.h"
+#include "answers/task7.h"
 
 #include <cerrno>
 #include <cstdio>

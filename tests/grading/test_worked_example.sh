@@ -4,7 +4,7 @@
 # a grid of film points) and a new test case of task 1 that asks it are added as a TA adds them,
 # from the pieces in worked_example/:
 #   a request   = 2 files: its struct in grading/judge/protocol.h (and its name in the list of
-#                 requests there), its answer in tests/task1/subject_answers.h;
+#                 requests there), its answer in grading/judge/answers/task1.h;
 #   a test case = 2 files: the TEST_CASE in tests/task1/test_generate_ray.cpp, its rubric entry in
 #                 grading/rubric.json.
 # Then:
@@ -28,7 +28,7 @@ tar -C "$root" --exclude=./.git --exclude='./build*' --exclude=./out --exclude=.
 	tar -C "$scratch" -xf -
 original=$out/original
 mkdir -p "$original"
-edited=(grading/judge/protocol.h tests/task1/subject_answers.h tests/task1/test_generate_ray.cpp grading/rubric.json)
+edited=(grading/judge/protocol.h grading/judge/answers/task1.h tests/task1/test_generate_ray.cpp grading/rubric.json)
 for file in "${edited[@]}"; do
 	mkdir -p "$original/$(dirname "$file")"
 	cp "$scratch/$file" "$original/$file"
@@ -48,10 +48,10 @@ insert_at() {
 }
 printf '\tFilm_Grid_Rays,\n' >"$out/list_entry.txt"
 
-# The request: its struct and its place in the list (protocol.h), its answer (subject_answers.h).
+# The request: its struct and its place in the list (protocol.h), its answer (answers/task1.h).
 insert_at before grading/judge/protocol.h "// ---- Task 2 ----" "$pieces/request.h"
 insert_at after grading/judge/protocol.h "$(printf '\tGenerate_Rays,')" "$out/list_entry.txt"
-insert_at before tests/task1/subject_answers.h "} // namespace" "$pieces/answer.h"
+insert_at before grading/judge/answers/task1.h "} // namespace" "$pieces/answer.h"
 # The test case, at the end of a task-1 file.
 cat "$pieces/test_case.cpp" >>"$scratch/tests/task1/test_generate_ray.cpp"
 
