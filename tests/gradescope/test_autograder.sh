@@ -84,17 +84,20 @@ grade one_mistake less "$mistake"/task*.cpp
 
 # What a student holding the release can hand in (tests/security/test_reference_holder.cpp), filled
 # in as the security suite fills it in: the compiled reference of task 3 as assembly, a task 1 that
-# would become another program, a task 7 that would be the reference if its compile could see an
-# earlier task's build. Each earns nothing: 0 with the stubs of the other tasks.
+# would become another program, a task 6 that names its own integrator as the framework's, a task 7
+# that would be the reference if its compile could see an earlier task's build. Each earns nothing:
+# 0 with the stubs of the other tasks.
 hostile=$out/hostile
 mkdir -p "$hostile"
 fill() { # NAME: tests/security/hostile/NAME with its placeholders filled in
 	sed -e "/@CORRECT_TASK1_IF@/{r $root/tests/security/hostile/correct_task1_if.inc" -e 'd}' \
 		-e "/@REFERENCE_TASK7@/{r $root/reference/task7_env_light.cpp" -e 'd}' \
+		-e "/@STUB_TASK6@/{r $root/student/task6_direct_lighting.cpp" -e 'd}' \
 		-e "/@STUB_TASK7@/{r $root/student/task7_env_light.cpp" -e 'd}' \
 		-e "s|@OUT@|/autograder/results/graded|g" "$root/tests/security/hostile/$1"
 }
 fill task1_if_exec_works.cpp >"$hostile/task1_camera.cpp"
+fill task6_integrator_named_as_framework.cpp >"$hostile/task6_direct_lighting.cpp"
 fill task7_if_earlier_builds_visible.cpp >"$hostile/task7_env_light.cpp"
 # shellcheck source=/dev/null
 source "$(dirname "$mutants")/grading/kit.env"
