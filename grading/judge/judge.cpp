@@ -6,8 +6,10 @@
 
 #include "judge.h"
 #include "lab_reporter.h"
+#include "significance.h"
 #include "verdict_summary.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -33,7 +35,13 @@ struct Judge_State {
 	std::string save_dir;  // where test cases' requests are saved, or empty
 	// The running test case.
 	std::string test_case;
+	std::string test_case_id;
 	size_t test_case_number = 0;
+	size_t secret_draws = 0; // generators secret_inputs() gave it
+	// Statistical checks: the grader's budget (every test case's [statistical:N]), the running test
+	// case's N and the checks it made, and the test cases whose count differed (grader mistakes).
+	size_t budget = 0, declared_checks = 0, made_checks = 0;
+	std::vector<std::string> miscounted;
 	Subject::Clock::time_point deadline;
 	std::unique_ptr<Subject> subject;
 	// The next test case's subject, started when this one's was taken: a process as fresh as any,
@@ -56,22 +64,57 @@ std::string requests_file() {
 	return s.save_dir + "/" + std::to_string(s.test_case_number) + "_" + slug.substr(0, 60) + ".requests";
 }
 
-// Starts each test case with no subject and its own time limit, and ends its subject with it.
+// The N of a test case's [statistical:N], 0 if it has none.
+size_t declared_checks(const catch2_seam::Test_Case& test_case) {
+	size_t checks = 0;
+	for (const std::string& count : test_case.tagged("statistical:")) {
+		size_t used = 0;
+		try {
+			checks += std::stoul(count, &used);
+		} catch (const std::exception&) {
+		}
+		if (used == 0 || used != count.size()) {
+			throw std::invalid_argument(test_case.file + ":" + std::to_string(test_case.line) + ": [statistical:" + count +
+			                            "] takes the number of the test case's statistical checks");
+		}
+	}
+	return checks;
+}
+
+// Starts each test case with no subject and its own time limit, and ends its subject with it;
+// keeps the count of its secret draws and statistical checks.
 class Subject_Lifecycle : public catch2_seam::Events {
 public:
+	void run_starting(const std::string&, const std::vector<catch2_seam::Test_Case>& all_test_cases) override {
+		Judge_State& s = state();
+		s.budget = 0;
+		for (const catch2_seam::Test_Case& test_case : all_test_cases) s.budget += declared_checks(test_case);
+	}
+
 	void test_case_starting(const catch2_seam::Test_Case& test_case) override {
 		Judge_State& s = state();
 		s.subject.reset();
 		s.test_case = test_case.name;
+		std::vector<std::string> ids = test_case.tagged("id:");
+		s.test_case_id = ids.empty() ? "" : ids.front();
+		s.secret_draws = 0;
+		s.declared_checks = declared_checks(test_case);
+		s.made_checks = 0;
 		s.test_case_number++;
 		s.deadline = Subject::Clock::now() + std::chrono::duration_cast<Subject::Clock::duration>(
 		                                        std::chrono::duration<double>(s.sandbox->limits().test_case_seconds));
 		if (!s.save_dir.empty()) std::filesystem::remove(requests_file());
 	}
 
-	void test_case_ended(const catch2_seam::Test_Case&, catch2_seam::Counts checks) override {
+	void test_case_ended(const catch2_seam::Test_Case& test_case, catch2_seam::Counts checks) override {
 		Judge_State& s = state();
 		s.subject.reset();
+		if (checks.failed == 0 && s.made_checks != s.declared_checks) {
+			s.miscounted.push_back(test_case.file + ":" + std::to_string(test_case.line) + ": '" + test_case.name +
+			                       "' declares [statistical:" + std::to_string(s.declared_checks) + "] but made " +
+			                       std::to_string(s.made_checks) + " statistical checks (significance() and "
+			                       "z_critical() count one, significance(k) and z_critical(k) k)");
+		}
 		if (!s.save_dir.empty() && checks.failed == 0) std::filesystem::remove(requests_file());
 	}
 };
@@ -106,12 +149,8 @@ Subject& subject() {
 	return *s.subject;
 }
 
-std::optional<uint64_t> secret_seed() {
-	return state().secret_seed;
-}
-
 namespace {
-// FNV-1a of `what`: a stream per test case.
+// FNV-1a of `what`: a stream per draw.
 uint64_t stream_of(const std::string& what) {
 	uint64_t h = 1469598103934665603ull;
 	for (unsigned char c : what) h = (h ^ c) * 1099511628211ull;
@@ -119,15 +158,38 @@ uint64_t stream_of(const std::string& what) {
 }
 } // namespace
 
-RNG case_generator(const std::string& what) {
-	return RNG(state().secret_seed.value_or(0), stream_of(what));
-}
-
-RNG scene_generator(const std::string& what) {
+std::optional<RNG> secret_inputs(Secret what) {
+	Judge_State& s = state();
+	if (!s.secret_seed) return std::nullopt;
+	if (s.test_case_id.empty()) {
+		throw std::logic_error("secret_inputs() in the test case '" + s.test_case + "', which has no [id:...] tag");
+	}
+	uint64_t seed = *s.secret_seed;
 	const char* variations = std::getenv("LAB_SCENE_VARIATIONS");
 	uint64_t n = variations ? std::strtoull(variations, nullptr, 10) : 0;
-	if (n == 0) return case_generator(what);
-	return RNG(state().secret_seed.value_or(0) % n, stream_of(what));
+	if (what == Secret::graded_scene && n != 0) seed %= n;
+	return RNG(seed, stream_of(s.test_case_id + "#" + std::to_string(s.secret_draws++)));
+}
+
+bool inputs_are_secret() {
+	return state().secret_seed.has_value();
+}
+
+uint64_t seed_or_public(std::optional<RNG>& secret, uint64_t public_seed) {
+	return secret ? uint64_t(secret->integer()) << 32 | secret->integer() : public_seed;
+}
+
+double significance(size_t checks) {
+	Judge_State& s = state();
+	s.made_checks += checks;
+	double one = stats::sidak(GRADER_ALPHA, std::max<size_t>(s.budget, 1));
+	return checks == 1 ? one : -std::expm1(double(checks) * std::log1p(-one));
+}
+
+double z_critical(size_t checks) {
+	double one = significance();
+	state().made_checks += checks - 1;
+	return stats::two_sided_z(one);
 }
 
 const Sandbox& sandbox() {
@@ -198,5 +260,9 @@ int main(int argc, char** argv) {
 	// How the code ran, after what it did: a student's first lines are the first failure's message.
 	std::cout << s.sandbox->notice() << "\n"
 	          << (s.secret_seed ? "inputs: drawn from the grading seed" : "inputs: the public test cases") << "\n";
+	if (!s.miscounted.empty()) {
+		for (const std::string& miscount : s.miscounted) std::cerr << "judge: the grader miscounts: " << miscount << "\n";
+		return 4;
+	}
 	return status;
 }

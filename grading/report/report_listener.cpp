@@ -86,7 +86,7 @@ private:
 		if (!report::enabled()) return;
 		Json record{{"grader", grader}, {"finished", finished}, {"fatal_error", fatal_error},
 		            {"sandbox", judge::sandbox().notice()},
-		            {"inputs", judge::secret_seed() ? "drawn from the grading seed" : "the public test cases"},
+		            {"inputs", judge::inputs_are_secret() ? "drawn from the grading seed" : "the public test cases"},
 		            {"expected_test_cases", expected}, {"running", running}, {"test_cases", test_cases}};
 		std::string path = report::file(report::task_name() + ".json");
 		std::filesystem::create_directories(report::directory());

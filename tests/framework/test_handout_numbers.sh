@@ -115,13 +115,44 @@ quoted() {
 	done
 }
 
+# statistical_checks GRADER_DIR: a grader's budget of statistical checks, the sum of its test cases'
+# [statistical:N] tags (grading/judge/judge.h, significance).
+statistical_checks() {
+	grep -ohE '\[statistical:[0-9]+\]' "$1"/*.cpp | tr -dc '0-9\n' | awk '{ n += $1 } END { print n + 0 }'
+}
+
+# quoted_budget HANDOUT HANDOUT_PATTERN GRADER_DIR: the number HANDOUT quotes is the grader's budget.
+quoted_budget() {
+	local handout=$1 handout_pattern=${2//@/"$handout_number"} grader=$3 budget entry line text
+	budget=$(statistical_checks "$grader")
+	local -a handout_lines
+	mapfile -t handout_lines < <(ascii_exponents "$handout" | grep -nE -- "$handout_pattern" || true)
+	if [ ${#handout_lines[@]} -eq 0 ]; then
+		problem "$handout: no line matches '$2' (the text changed: update the table in $0)"
+		return
+	fi
+	for entry in "${handout_lines[@]}"; do
+		line=${entry%%:*}
+		text=$(number_in "$handout_pattern" "${entry#*:}")
+		checked=$((checked + 1))
+		if [ "$(value "$text")" = "$budget" ]; then
+			echo "$handout:$line: $text = the [statistical:N] tags of $grader/*.cpp"
+		else
+			problem "$handout:$line quotes $text statistical checks (where '$2' is), but the test cases of" \
+				"$grader/ declare $budget ([statistical:N] tags): make them agree"
+		fi
+	done
+}
+
 # ---- The table ----------------------------------------------------------------------------------
 
 # Task 1: the camera's tolerance, the pixel test's samples and cells, the image test's significance.
 quoted handouts/task1_camera.md 'in double precision\) within @' tests/task1/camera_check.h 'DIRECTION_TOLERANCE = @;'
 quoted handouts/task1_camera.md '@ samples each of three pixels' tests/task1/test_trace_pixel.cpp 'constexpr uint32_t N = @;'
 quoted handouts/task1_camera.md 'uniformity over @ × ' tests/task1/test_trace_pixel.cpp 'constexpr int CELLS = @;'
-quoted handouts/task1_camera.md 'Both share a @ chance' framework/film/image_compare.h 'IMAGE_ALPHA = @;'
+quoted handouts/task1_camera.md 'share a @ chance of failing' grading/judge/judge.h 'GRADER_ALPHA = @;'
+quoted_budget handouts/task1_camera.md 'grader.s @ statistical$' tests/task1
+quoted_budget handouts/task1_camera.md '0\.99\^\(1/@\)' tests/task1
 
 # Task 2: the barycentric slack, what the grader allows, its rounding bound and its rays.
 quoted handouts/task2_shapes.md '`ε = @`' reference/task2_shapes.cpp 'EDGE_SLACK = @;'
@@ -146,6 +177,9 @@ quoted handouts/task4_path.md 'the offset of §4.2 \(k = @\) only' framework/api
 quoted handouts/task4_path.md '\) · k · @$' framework/api/spawn_ray.h 'RAY_EPSILON = [0-9.]+f \* @;'
 quoted handouts/task4_path.md '`ray.depth >= @`' reference/task4_path.cpp 'ROULETTE_DEPTH = @;'
 quoted handouts/task4_path.md '`ray.depth >= @`' framework/render/integrators/nee_integrator.cpp 'ROULETTE_DEPTH = @;'
+quoted handouts/task4_path.md 'share a @ chance of failing' grading/judge/judge.h 'GRADER_ALPHA = @;'
+quoted_budget handouts/task4_path.md 'grader.s @ statistical checks' tests/task4
+quoted_budget handouts/task4_path.md '0\.99\^\(1/@\)' tests/task4
 quoted handouts/task4_path.md 'allowance of @ \(relative\)' tests/support/film_statistics.h 'FLOAT_SLACK = @;'
 quoted handouts/task4_path.md '\| @ samples for 5 `out_dir`s' tests/task4/test_lambertian.cpp 'samples = @, chunks'
 quoted handouts/task4_path.md 'Šidák over 48 tests at @\)' tests/stress/test_translated_cornell_box.cpp 'sidak\(@, tests\)'
@@ -154,26 +188,28 @@ quoted handouts/task4_path.md 'Šidák over 48 tests at @\)' tests/stress/test_t
 quoted handouts/task5_materials.md '^@ against the exact formula' tests/task5/test_fresnel.cpp 'TOLERANCE = @;'
 quoted handouts/task5_materials.md 'beyond the critical angle inside\) to @;' tests/task5/test_fresnel.cpp 'TOLERANCE = @;'
 quoted handouts/task5_materials.md 'allowance of @ for' tests/support/film_statistics.h 'FLOAT_SLACK = @;'
-quoted handouts/task5_materials.md 'over the file.s @ checks' tests/task5/test_furnaces.cpp 'CHECKS = @;'
+quoted handouts/task5_materials.md 'share a @ chance' grading/judge/judge.h 'GRADER_ALPHA = @;'
+quoted_budget handouts/task5_materials.md '^@ statistical checks share' tests/task5
+quoted_budget handouts/task5_materials.md '0\.99\^\(1/@\)' tests/task5
 quoted handouts/task5_materials.md '\| @ samples at each of' tests/task5/test_mirror_glass.cpp 'trials = @;'
 
 # Task 6: the shadow ray's end, the mixture's pdf tolerance and samples, the noise batches, the
 # graders' significance and number of checks (task 6 and its NEE extension).
 quoted handouts/task6_direct_lighting.md '`SHADOW_RAY_END` = 1 − @\)' framework/api/pathtracer.h 'SHADOW_RAY_END = 1.0f - @;'
 quoted handouts/task6_direct_lighting.md 'returned direction to @ \(relative\)' tests/task6/test_sample_incoming.cpp 'abs\(s.pdf - expected\) <= @ \* expected'
-quoted handouts/task6_direct_lighting.md '\| @ samples on a tilted surface' tests/task6/test_sample_incoming.cpp 'samples_at\(scene, lit, @, sampling_seed\("mixture density, square"'
+quoted handouts/task6_direct_lighting.md '\| @ samples on a tilted surface' tests/task6/test_sample_incoming.cpp 'samples_at\(scene, lit, @, sampling_seed\(1\)'
 quoted handouts/task6_direct_lighting.md 'cut into @ batches' tests/support/sample_moments.h 'NOISE_BATCHES = @;'
-quoted handouts/task6_direct_lighting.md '0\.99\^\(1/@\)' tests/task6/grader_significance.h 'STATISTICAL_CHECKS = @;'
-quoted handouts/task6_direct_lighting.md 'share a @ chance of failing a correct solution \(Šidák correction, α' tests/task6/grader_significance.h 'ALPHA = @;'
-quoted handouts/task6_direct_lighting.md 'share a @ chance of failing a correct solution \(Šidák correction\)\.' tests/task6_nee/nee_significance.h 'ALPHA = @;'
+quoted_budget handouts/task6_direct_lighting.md '0\.99\^\(1/@\)' tests/task6
+quoted_budget handouts/task6_direct_lighting.md 'The @ statistical checks — a z-test' tests/task6_nee
+quoted handouts/task6_direct_lighting.md 'share a @ chance of failing a correct solution \(Šidák correction, α' grading/judge/judge.h 'GRADER_ALPHA = @;'
+quoted handouts/task6_direct_lighting.md 'share a @ chance of failing a correct solution \(Šidák correction\)\.' grading/judge/judge.h 'GRADER_ALPHA = @;'
 
 # Task 7: the table's bilinear weights, the graders' significance, numbers of tests, batches and bounds.
 quoted handouts/task7_env_light.md 'with w = \(@, ' reference/task7_env_light.cpp 'weight\[3\] = \{@, '
 quoted handouts/task7_env_light.md 'with w = \([0-9/]+, @, ' reference/task7_env_light.cpp 'weight\[3\] = \{[0-9.]+, @, '
-quoted handouts/task7_env_light.md 'use significance @ with a Šidák' tests/task7/env_test_support.h 'ALPHA = @;'
-quoted handouts/task7_env_light.md 'correction over the @ of them' tests/task7/env_test_support.h 'CHI2_TESTS = @;'
-quoted handouts/task7_env_light.md 'The @ z-tests$' tests/task7/env_test_support.h 'Z_TESTS = @;'
-quoted handouts/task7_env_light.md 'and these @ noise checks' tests/task7/env_test_support.h 'NOISE_CHECKS = @;'
+quoted handouts/task7_env_light.md 'share a @ chance of failing' grading/judge/judge.h 'GRADER_ALPHA = @;'
+quoted_budget handouts/task7_env_light.md 'The grader.s @$' tests/task7
+quoted_budget handouts/task7_env_light.md '0\.99\^\(1/@\)' tests/task7
 quoted handouts/task7_env_light.md 'variances of @ batches' tests/support/sample_moments.h 'NOISE_BATCHES = @;'
 quoted handouts/task7_env_light.md 'at most @ × the light' tests/task7/test_bright_texel.cpp 'bound = @ \* radiance_integral'
 quoted handouts/task7_env_light.md 'luminance · sin θ \(within @\)' tests/task7/test_importance.cpp 'got / expected - 1.0\) <= @\)'

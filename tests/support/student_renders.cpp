@@ -47,21 +47,19 @@ void check_renders_like_reference(const Image_Test& test) {
 	// Under a grading seed, the scene as the seed varies it and the judge's own reference of it
 	// (graded_variation.h); in public, the scene file and its stored reference.
 	std::optional<nlohmann::ordered_json> varied;
-	if (judge::secret_seed()) {
-		RNG variation = judge::scene_generator("scene " + test.name);
-		varied = vary_graded_scene(graded, variation);
+	if (std::optional<RNG> variation = judge::secret_inputs(judge::Secret::graded_scene)) {
+		varied = vary_graded_scene(graded, *variation);
 	}
 	Scene scene = varied ? load_scene(*varied, graded_scene_file(graded.name)) : load_graded(graded);
 	Render_Settings settings = scene.settings;
-	if (judge::secret_seed()) {
-		RNG rng = judge::case_generator("render " + test.name);
-		settings.seed = uint64_t(rng.integer()) << 32 | rng.integer();
-	}
+	std::optional<RNG> secret = judge::secret_inputs();
+	settings.seed = judge::seed_or_public(secret, settings.seed);
 	Film film = judge::ask(protocol::Render{scene, settings, Estimator_Choice{test.integrator}, graded.view, 2});
+	const double alpha = judge::significance(2); // the means' and the noise's checks (image_compare.h)
 	Reference_Check check = [&] {
-		if (!varied) return compare_with_reference(graded, film, settings, test.integrator, test.alpha);
+		if (!varied) return compare_with_reference(graded, film, settings, test.integrator, alpha);
 		Judge_Reference reference = judge_reference(graded, *varied, settings, test.integrator);
-		return compare_with(film, settings, std::move(reference.reference), reference.calibration, test.alpha);
+		return compare_with(film, settings, std::move(reference.reference), reference.calibration, alpha);
 	}();
 	if (report::enabled()) report_images(test.name, check);
 	std::ostringstream render_it;

@@ -21,14 +21,13 @@ struct Image_Hint {
 // writes the render, the reference and a heat map of the z-scores (z_heat_map.h) as PNGs and
 // attaches them to the test case. With a grading seed the render uses a seed drawn from it.
 // `integrator`: the integrator the render uses (task 6's extension renders with "nee").
-// `alpha`: the test case's significance, shared by its z-tests and its bound on the render's noise
-// (image_compare.h); a grader whose checks share one α passes its share.
+// Its significance is two checks' share of the grader's (judge::significance(2): the z-tests of
+// the means, and the bound on the render's noise, image_compare.h): tag the test case [statistical:2].
 // `if_noisy`: what makes renders of this task noisier than the reference's, in the handout's terms.
 struct Image_Test {
 	std::string name, hint;
 	std::vector<Image_Hint> if_failed;
 	std::string if_noisy;
 	std::string integrator = "mixture";
-	double alpha = 0.01;
 };
 void check_renders_like_reference(const Image_Test& test);

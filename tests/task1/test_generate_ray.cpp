@@ -50,12 +50,12 @@ bool check_rays(const std::vector<Generate_Rays::Query>& queries) {
 // Films of several shapes: square, landscape, portrait, cinema; narrow to wide fields of view. With
 // a grading seed, six others drawn from the same ranges.
 std::vector<std::pair<float, float>> fovs_and_aspects() {
-	if (!judge::secret_seed()) {
+	std::optional<RNG> secret = judge::secret_inputs();
+	if (!secret) {
 		return {{60.0f, 1.0f}, {20.0f, 4.0f / 3.0f}, {45.0f, 16.0f / 9.0f}, {90.0f, 0.5f}, {120.0f, 2.39f}, {75.0f, 0.75f}};
 	}
-	RNG rng = judge::case_generator("fov and aspect");
 	std::vector<std::pair<float, float>> cases;
-	for (int i = 0; i < 6; i++) cases.emplace_back(15.0f + 125.0f * rng.unit(), 0.4f + 2.1f * rng.unit());
+	for (int i = 0; i < 6; i++) cases.emplace_back(15.0f + 125.0f * secret->unit(), 0.4f + 2.1f * secret->unit());
 	return cases;
 }
 
@@ -63,24 +63,24 @@ std::vector<std::pair<float, float>> fovs_and_aspects() {
 // corner); with a grading seed the points off the axes are drawn at random.
 std::vector<DVec2> film_points() {
 	std::vector<DVec2> points{{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}, {1.0, 1.0}, {0.5, 0.0}, {0.5, 1.0}, {0.0, 0.5}, {1.0, 0.5}};
-	if (!judge::secret_seed()) {
+	std::optional<RNG> secret = judge::secret_inputs();
+	if (!secret) {
 		points.insert(points.end(), {{0.2, 0.7}, {0.9, 0.15}});
 	} else {
-		RNG rng = judge::case_generator("film points");
-		for (int i = 0; i < 4; i++) points.push_back(DVec2(rng.unit2()));
+		for (int i = 0; i < 4; i++) points.push_back(DVec2(secret->unit2()));
 	}
 	return points;
 }
 
 // A point in [-r, r]^3, public or drawn from the grading seed.
-Vec3 place(RNG& rng, Vec3 public_point, float r) {
-	if (!judge::secret_seed()) return public_point;
-	return r * (2.0f * Vec3(rng.unit(), rng.unit(), rng.unit()) - 1.0f);
+Vec3 place(std::optional<RNG>& secret, Vec3 public_point, float r) {
+	if (!secret) return public_point;
+	return r * (2.0f * Vec3(secret->unit(), secret->unit(), secret->unit()) - 1.0f);
 }
 
 // A field of view in degrees, public or drawn from the grading seed.
-float fov(RNG& rng, float public_fov) {
-	return judge::secret_seed() ? 15.0f + 125.0f * rng.unit() : public_fov;
+float fov(std::optional<RNG>& secret, float public_fov) {
+	return secret ? 15.0f + 125.0f * secret->unit() : public_fov;
 }
 
 } // namespace
@@ -141,7 +141,7 @@ TEST_CASE("generate_ray: the film spans exactly v_fov vertically and the aspect 
 
 TEST_CASE("generate_ray: film (0, 0) is up and to the left as seen by the camera", "[id:t1.ray.orientation][fn:generate_ray]") {
 	// A camera turned to look along a diagonal: "up" and "left" are the camera's, not the world's.
-	RNG rng = judge::case_generator("up and left");
+	std::optional<RNG> rng = judge::secret_inputs();
 	Vec3 position = place(rng, {1.0f, 2.0f, 3.0f}, 5.0f), target = place(rng, {-2.0f, 0.5f, -1.0f}, 5.0f);
 	Vec3 world_up{0.0f, 1.0f, 0.0f};
 	Camera camera = Camera::look_at(position, target, world_up, fov(rng, 50.0f), 1.5f);
@@ -178,10 +178,10 @@ TEST_CASE("generate_ray: film (0, 0) is up and to the left as seen by the camera
 }
 
 TEST_CASE("generate_ray: directions are unit length and dist_bounds is [0, inf)", "[id:t1.ray.unit-and-bounds][fn:generate_ray]") {
-	RNG cases = judge::case_generator("unit length");
+	std::optional<RNG> cases = judge::secret_inputs();
 	Camera camera = Camera::look_at(place(cases, Vec3{0.0f, 1.0f, 4.0f}, 5.0f), Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f},
 	                                fov(cases, 70.0f), 16.0f / 9.0f);
-	RNG rng(judge::secret_seed().value_or(11));
+	RNG rng(judge::seed_or_public(cases, 11));
 	std::vector<Generate_Rays::Query> queries;
 	for (int i = 0; i < 1000; i++) queries.push_back({camera, rng.unit2()});
 	size_t wrong_length = 0, wrong_bounds = 0;
@@ -198,7 +198,7 @@ TEST_CASE("generate_ray: directions are unit length and dist_bounds is [0, inf)"
 }
 
 TEST_CASE("generate_ray: camera_to_world moves the origin to the camera and rotates the directions", "[id:t1.ray.camera-to-world][fn:generate_ray]") {
-	RNG rng = judge::case_generator("camera_to_world");
+	std::optional<RNG> rng = judge::secret_inputs();
 	SECTION("a camera made by look_at looks at its target") {
 		Vec3 position = place(rng, {3.0f, -2.0f, 5.0f}, 6.0f), target = place(rng, {0.0f, 1.0f, -1.0f}, 6.0f);
 		Camera camera = Camera::look_at(position, target, Vec3{0.0f, 1.0f, 0.0f}, fov(rng, 40.0f), 1.25f);
@@ -223,8 +223,8 @@ TEST_CASE("generate_ray: camera_to_world moves the origin to the camera and rota
 	}
 	SECTION("a camera_to_world matrix set directly (rotation and translation)") {
 		Camera camera = camera_at_origin(fov(rng, 65.0f), 0.8f);
-		Vec3 axis = judge::secret_seed() ? place(rng, {}, 1.0f) + Vec3{0.0f, 0.0f, 1.5f} : Vec3{1.0f, -2.0f, 0.5f};
-		float angle = judge::secret_seed() ? 6.0f * rng.unit() : 2.0f;
+		Vec3 axis = rng ? place(rng, {}, 1.0f) + Vec3{0.0f, 0.0f, 1.5f} : Vec3{1.0f, -2.0f, 0.5f};
+		float angle = rng ? 6.0f * rng->unit() : 2.0f;
 		Mat4 rotation = glm::rotate(Mat4{1.0f}, angle, glm::normalize(axis));
 		camera.camera_to_world = glm::translate(Mat4{1.0f}, place(rng, {-4.0f, 7.5f, 2.0f}, 8.0f)) * rotation;
 		std::vector<Generate_Rays::Query> queries;

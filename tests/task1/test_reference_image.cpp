@@ -7,7 +7,7 @@
 #include "lab_catch2.h"
 
 TEST_CASE("the graded scene eye_bunny renders like its reference image",
-          "[id:t1.image.eye-bunny][estimate][task1][image][statistical][uses:generate_ray][uses:trace_pixel]") {
+          "[id:t1.image.eye-bunny][estimate][task1][image][statistical:2][uses:generate_ray][uses:trace_pixel]") {
 	Image_Test test;
 	test.name = "eye_bunny";
 	test.hint = "If the picture is shifted, flipped or stretched, look at generate_ray (handout §1.2); if edges are too "

@@ -22,16 +22,12 @@ constexpr uint32_t WIDTH = 64, HEIGHT = 48;
 
 // The render seed: public, or drawn from the grading seed.
 uint64_t render_seed() {
-	if (!judge::secret_seed()) return 20240917;
-	RNG rng = judge::case_generator("trace_pixel seed");
-	return uint64_t(rng.integer()) << 32 | rng.integer();
+	std::optional<RNG> secret = judge::secret_inputs();
+	return judge::seed_or_public(secret, 20240917);
 }
 
-// The statistical tests of this file share alpha = 0.01 (Šidák): for each of the three pixels
-// below, one chi-square test and two z-tests of the mean offset.
+// The pixels whose samples are tested for uniformity.
 const std::vector<std::pair<uint32_t, uint32_t>> STAT_PIXELS{{0, 0}, {37, 22}, {WIDTH - 1, HEIGHT - 1}};
-const size_t STAT_TESTS = 3 * STAT_PIXELS.size();
-const double ALPHA = stats::sidak(0.01, STAT_TESTS);
 
 // Recovering d from the float colour loses ~1e-7 per component, about 1e-5 of a pixel here; a
 // sample more than 1e-3 pixel outside its pixel is a real error.
@@ -41,10 +37,9 @@ Scene direction_scene() {
 	Scene scene;
 	Vec3 position{1.0f, 2.0f, 3.0f};
 	float v_fov = 50.0f;
-	if (judge::secret_seed()) {
-		RNG rng = judge::case_generator("trace_pixel camera");
-		position = 5.0f * (Vec3(rng.unit(), rng.unit(), rng.unit()) + 0.2f);
-		v_fov = 20.0f + 100.0f * rng.unit();
+	if (std::optional<RNG> secret = judge::secret_inputs()) {
+		position = 5.0f * (Vec3(secret->unit(), secret->unit(), secret->unit()) + 0.2f);
+		v_fov = 20.0f + 100.0f * secret->unit();
 	}
 	scene.camera = Camera::look_at(position, Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f}, v_fov, float(WIDTH) / float(HEIGHT));
 	scene.settings.width = WIDTH;
@@ -176,11 +171,11 @@ TEST_CASE("trace_pixel: every sample of pixel (x, y) falls inside that pixel, in
 	}
 }
 
-TEST_CASE("trace_pixel: samples are uniform over the pixel around its centre (x + 0.5, y + 0.5)", "[id:t1.pixel.uniform][estimate][fn:trace_pixel][uses:generate_ray]") {
+TEST_CASE("trace_pixel: samples are uniform over the pixel around its centre (x + 0.5, y + 0.5)", "[id:t1.pixel.uniform][statistical:9][estimate][fn:trace_pixel][uses:generate_ray]") {
 	// 10^5 samples per pixel in 8 x 8 cells (expected 1562.5 per cell): a chi-square test of
-	// uniformity, and z-tests that the mean offset is the pixel centre 0.5 (variance 1/12 per axis).
+	// uniformity, and z-tests that the mean offset is the pixel centre 0.5 (variance 1/12 per axis):
+	// three statistical checks per pixel.
 	constexpr uint32_t N = 100000;
-	const double z_max = stats::two_sided_z(ALPHA);
 	std::vector<std::vector<Sample>> samples = sample_pixels(direction_scene(), STAT_PIXELS, N);
 	for (size_t i = 0; i < STAT_PIXELS.size(); i++) {
 		auto [x, y] = STAT_PIXELS[i];
@@ -196,20 +191,22 @@ TEST_CASE("trace_pixel: samples are uniform over the pixel around its centre (x 
 		std::vector<double> expected(CELLS * CELLS, double(N) / (CELLS * CELLS));
 		stats::Chi2_Result chi2 = stats::chi2_test(offsets.histogram, expected);
 		{
+			const double alpha = judge::significance();
 			INFO((no_jitter ? "no jitter: supersampling needs a uniformly random point in the pixel (handout §1.3)"
 			                : "the points chosen in the pixel are not uniform: take (x + u1, y + u2) with (u1, u2) = "
 			                  "rng.unit2(), two independent numbers, one per axis (handout §1.3)")
 			     << ". Offsets within the pixel ranged over [" << lo.x << ", " << hi.x << "] x [" << lo.y << ", "
 			     << hi.y << "]; chi-square = " << chi2.statistic << " with " << chi2.dof << " degrees of freedom, p = "
-			     << chi2.p_value << ", alpha = " << ALPHA);
-			CHECK(chi2.p_value >= ALPHA);
+			     << chi2.p_value << ", alpha = " << alpha);
+			CHECK(chi2.p_value >= alpha);
 		}
 		DVec2 mean = offsets.sum / double(N);
 		double sigma = std::sqrt(1.0 / 12.0 / N);
+		const double z_max = judge::z_critical(); // the same for the two axes' tests, counted apart below
 		INFO("the mean offset within the pixel is (" << mean.x << ", " << mean.y << "); uniform points in the pixel "
 		     "average to its centre (0.5, 0.5) +- " << z_max * sigma << ". Pixel (x, y) covers [x, x + 1) x [y, y + 1) "
 		     "(handout §1.3)");
 		CHECK(std::abs(mean.x - 0.5) / sigma <= z_max);
-		CHECK(std::abs(mean.y - 0.5) / sigma <= z_max);
+		CHECK(std::abs(mean.y - 0.5) / sigma <= judge::z_critical());
 	}
 }

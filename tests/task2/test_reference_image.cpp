@@ -7,7 +7,7 @@
 #include "lab_catch2.h"
 
 TEST_CASE("the graded scene eye_bunny renders like its reference image",
-          "[id:t2.image.eye-bunny][task2][image][statistical][uses:Triangle::hit][uses:Sphere::hit]") {
+          "[id:t2.image.eye-bunny][task2][image][statistical:2][uses:Triangle::hit][uses:Sphere::hit]") {
 	Image_Test test;
 	test.name = "eye_bunny";
 	test.hint = "Wrong shading on the sphere or the bunny: check that hit normals point outwards, that the barycentric "

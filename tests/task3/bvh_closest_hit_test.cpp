@@ -35,25 +35,25 @@ void check_against_brute_force(const std::vector<Triangle>& triangles, const std
 } // namespace
 
 TEST_CASE("BVH::hit equals brute force on a random triangle soup", "[id:t3.bvh.closest-hit-soup][task3][bvh][closest_hit][fn:BVH::hit][uses:BBox::hit][uses:BVH::build]") {
-	RNG rng(scene_seed("soup", 301));
+	RNG rng(scene_seed(301));
 	std::vector<Triangle> triangles = random_soup(rng, 1000, 0.1f);
 	check_against_brute_force(triangles, random_rays(rng, bounds_of(triangles), triangles, 50000));
 }
 
 TEST_CASE("BVH::hit equals brute force on clustered triangles with a few large ones", "[id:t3.bvh.closest-hit-clustered][task3][bvh][closest_hit][fn:BVH::hit][uses:BBox::hit][uses:BVH::build]") {
-	RNG rng(scene_seed("clusters", 302));
+	RNG rng(scene_seed(302));
 	std::vector<Triangle> triangles = clustered_soup(rng);
 	check_against_brute_force(triangles, random_rays(rng, bounds_of(triangles), triangles, 10000));
 }
 
 TEST_CASE("BVH::hit equals brute force on the bunny mesh", "[id:t3.bvh.closest-hit-bunny][task3][bvh][closest_hit][fn:BVH::hit][uses:BBox::hit][uses:BVH::build]") {
-	RNG rng(scene_seed("bunny", 303));
-	std::vector<Triangle> triangles = load_placed_mesh("scenes/meshes/bunny_npm_lowres.obj", "bunny");
+	RNG rng(scene_seed(303));
+	std::vector<Triangle> triangles = load_placed_mesh("scenes/meshes/bunny_npm_lowres.obj");
 	check_against_brute_force(triangles, random_rays(rng, bounds_of(triangles), triangles, 20000));
 }
 
 TEST_CASE("BVH::hit equals brute force on the dragon mesh", "[id:t3.bvh.closest-hit-dragon][task3][bvh][closest_hit][fn:BVH::hit][uses:BBox::hit][uses:BVH::build]") {
-	RNG rng(scene_seed("dragon", 304));
-	std::vector<Triangle> triangles = load_placed_mesh("scenes/meshes/dragon_vrip_res4.obj", "dragon");
+	RNG rng(scene_seed(304));
+	std::vector<Triangle> triangles = load_placed_mesh("scenes/meshes/dragon_vrip_res4.obj");
 	check_against_brute_force(triangles, random_rays(rng, bounds_of(triangles), triangles, 5000));
 }

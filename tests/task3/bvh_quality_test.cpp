@@ -172,22 +172,22 @@ Scene triangle_objects(const std::vector<Triangle>& triangles) {
 } // namespace
 
 TEST_CASE("BVH::build: SAH cost within 1.2x of a binned-SAH tree", "[id:t3.bvh.sah-cost][task3][bvh][sah][fn:BVH::build]") {
-	RNG rng(scene_seed("SAH cost", 321));
+	RNG rng(scene_seed(321));
 	check_sah_cost("clustered triangles with a few large ones", clustered_soup(rng)) &&
 		check_sah_cost("a random triangle soup", random_soup(rng, 4000, 0.05f)) &&
-		check_sah_cost("the bunny mesh", load_placed_mesh("scenes/meshes/bunny_npm_lowres.obj", "SAH bunny")) &&
-		check_sah_cost("the dragon mesh", load_placed_mesh("scenes/meshes/dragon_vrip_res4.obj", "SAH dragon"));
+		check_sah_cost("the bunny mesh", load_placed_mesh("scenes/meshes/bunny_npm_lowres.obj")) &&
+		check_sah_cost("the dragon mesh", load_placed_mesh("scenes/meshes/dragon_vrip_res4.obj"));
 }
 
 TEST_CASE("BVH::hit: objects tested per ray within 1.5x of an ideal front-to-back traversal",
           "[id:t3.bvh.traversal-cost][task3][bvh][traversal][fn:BVH::hit][uses:BBox::hit][uses:BVH::build]") {
-	RNG rng(scene_seed("traversal", 322));
+	RNG rng(scene_seed(322));
 	Scene cloud = object_cloud(rng, 4000);
 	std::vector<Triangle> vertices_for_rays = random_soup(rng, 100, 0.06f);
 	check_primitive_tests("a cloud of small triangles and spheres", cloud,
 	                      random_rays(rng, cloud.bvh.bbox(), vertices_for_rays, RAYS));
 
-	std::vector<Triangle> bunny = load_placed_mesh("scenes/meshes/bunny_npm_lowres.obj", "traversal bunny");
+	std::vector<Triangle> bunny = load_placed_mesh("scenes/meshes/bunny_npm_lowres.obj");
 	check_primitive_tests("the bunny, one object per triangle", triangle_objects(bunny),
 	                      random_rays(rng, bounds_of(bunny), bunny, RAYS));
 }

@@ -51,7 +51,7 @@ bool check_structure(const std::vector<Triangle>& triangles, size_t max_leaf_siz
 
 TEST_CASE("BVH::build: every primitive once, node ranges nested and tight boxes, small leaves",
           "[id:t3.bvh.structure][task3][bvh][structure][fn:BVH::build]") {
-	RNG rng(scene_seed("structure", 311));
+	RNG rng(scene_seed(311));
 	std::vector<Triangle> soup = random_soup(rng, 3000, 0.08f);
 	std::vector<Triangle> clusters = clustered_soup(rng);
 	for (size_t max_leaf_size : {1, 2, 4, 8}) {
@@ -70,7 +70,7 @@ TEST_CASE("BVH with no primitives: hit misses, bbox is empty", "[id:t3.bvh.empty
 }
 
 TEST_CASE("BVH with one primitive: a leaf root, hits like the triangle itself", "[id:t3.bvh.one-primitive][task3][bvh][degenerate][fn:BVH::build][fn:BVH::hit][uses:BBox::hit]") {
-	RNG rng(scene_seed("one triangle", 312));
+	RNG rng(scene_seed(312));
 	std::vector<Triangle> one{make_triangle(rng, {0.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f})};
 	const std::vector<Ray> rays{Ray{{0.25f, 0.25f, 1.0f}, {0.0f, 0.0f, -1.0f}}, Ray{{0.75f, 0.75f, 1.0f}, {0.0f, 0.0f, -1.0f}},
 	                            Ray{{-1.0f, -1.0f, -1.0f}, {1.2f, 1.1f, 1.0f}}, Ray{{0.25f, 0.25f, 1.0f}, {0.0f, 0.0f, 1.0f}}};
@@ -87,7 +87,7 @@ TEST_CASE("BVH with one primitive: a leaf root, hits like the triangle itself", 
 
 TEST_CASE("BVH over identical triangles (all centroids coincide): the build ends, hits are right",
           "[id:t3.bvh.identical-centroids][task3][bvh][degenerate][fn:BVH::build][fn:BVH::hit][uses:BBox::hit]") {
-	RNG rng(scene_seed("identical triangles", 313));
+	RNG rng(scene_seed(313));
 	std::vector<Triangle> same(500, make_triangle(rng, {0.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.5f}, {0.0f, 1.0f, 1.0f}));
 	// Different triangles around one centroid: coincident centroids, but different boxes.
 	std::vector<Triangle> around;
@@ -116,7 +116,7 @@ TEST_CASE("BVH over identical triangles (all centroids coincide): the build ends
 }
 
 TEST_CASE("BVH over a flat mesh (every box flat in z): structure and hits", "[id:t3.bvh.flat-mesh][task3][bvh][degenerate][fn:BVH::build][fn:BVH::hit][uses:BBox::hit]") {
-	RNG rng(scene_seed("flat mesh", 314));
+	RNG rng(scene_seed(314));
 	const int n = 24;
 	std::vector<Triangle> grid = planar_grid(rng, n);
 

@@ -57,10 +57,10 @@ private:
 
 // The grader's seed for a test case's scene and rays: `public_seed`, or with a grading seed one
 // drawn from it.
-uint64_t scene_seed(const std::string& test_case, uint64_t public_seed);
+uint64_t scene_seed(uint64_t public_seed);
 
 // The mesh in `path` as it is, or with a grading seed turned and moved by a transform drawn from it.
-std::vector<Triangle> load_placed_mesh(const std::string& path, const std::string& test_case);
+std::vector<Triangle> load_placed_mesh(const std::string& path);
 
 // One instance per triangle, each a one-triangle Tri_Mesh at the identity transform.
 std::vector<Instance> triangle_instances(const std::vector<Triangle>& triangles);

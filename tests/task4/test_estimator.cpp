@@ -11,13 +11,13 @@
 // Each render may not be noisier than the reference's, pixel by pixel (the sign test,
 // paired_noise.h): noise or fireflies fail every time, not by chance. A closed form can be computed
 // from the request alone, without tracing: each test case ends with a probe no closed form answers
-// (check_probe, furnace_scenes.h), against the judge's own render of it.
+// (check_probe, furnace_scenes.h), against the judge's own render of it. Each z-test and each noise
+// check is made at the grader's level for one check (judge.h: significance).
 #include "film_statistics.h"
 #include "judge.h"
 #include "furnace_scenes.h"
 #include "statistics.h"
 #include "student_furnaces.h"
-#include "student_secret_inputs.h"
 
 #include "lab_catch2.h"
 
@@ -27,14 +27,6 @@
 #include <string>
 
 namespace {
-
-// Every check of this file shares the significance level 0.01 (Šidák correction over all of them):
-// 72 z-tests of means (27 + 24 + 18 + 3, counted per TEST_CASE below) and the noise of each of the
-// 14 renders (3 + 4 + 6 + 1), and the 4 probes' block means and noise (check_probe).
-constexpr size_t CHECKS = 72 + 14 + 52; // the 4 probes: 12 block means and the noise each
-static_assert(PROBE_CHECKS == 12, "the probes' block means counted above");
-const double ALPHA = stats::sidak(0.01, CHECKS);
-const double Z = stats::two_sided_z(ALPHA);
 
 const char* const IF_NOISY =
 	"Look for weights that can grow without bound: a division by a small pdf or cosine (the weight is f |cos| / pdf, "
@@ -80,10 +72,10 @@ void require_finite(const Furnace_Render& render) {
 	REQUIRE(render.film.non_finite() == 0);
 }
 
-// The render's noise against the reference's (one of the file's checks). After a wrong mean the
+// The render's noise against the reference's (one statistical check). After a wrong mean the
 // noise of a render of something else says nothing of its own: no lead then.
 bool check_noise(const Furnace_Render& render, const std::string& what, bool means_ok = true) {
-	return check_noise(render, ALPHA, what,
+	return check_noise(render, judge::significance(), what,
 	                   means_ok ? lead(IF_NOISY) : "Its mean is wrong too (above): fix that first, the noise follows");
 }
 
@@ -91,21 +83,21 @@ bool check_noise(const Furnace_Render& render, const std::string& what, bool mea
 // sphere, whose image has no closed form, against the judge's render of it with the reference.
 void check_probe(const Scene& furnace, uint32_t size, std::optional<RNG>& secret) {
 	Scene probe = with_probe_sphere(furnace, secret ? &*secret : nullptr);
-	Furnace_Render render = render_square(probe, size, 256, 5, seed_or_public(secret, 500));
+	Furnace_Render render = render_square(probe, size, 256, 5, judge::seed_or_public(secret, 500));
 	require_finite(render);
 	const std::string what = "The probe (this furnace with a second diffuse sphere " +
 	                         std::string(furnace.environment ? "beside its sphere" : "inside it") +
 	                         ", max_depth 5: no closed form, so it is compared with the reference's render of the same scene)";
-	if (!check_like_reference(render, Z, what)) return;
+	if (!check_like_reference(render, judge::z_critical(PROBE_CHECKS), what)) return;
 	check_noise(render, "the probe");
 }
 
 } // namespace
 
-TEST_CASE("Furnace: a white diffuse sphere in a uniform environment renders the environment, 1, everywhere", "[id:t4.furnace.white][estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
+TEST_CASE("Furnace: a white diffuse sphere in a uniform environment renders the environment, 1, everywhere", "[id:t4.furnace.white][statistical:43][estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
 	// Albedo 1 and L_env = 1: whatever the path, light is neither created nor lost (anchors §4). A
 	// convex object never sees itself, so this holds for every max_depth >= 1.
-	std::optional<RNG> secret = secret_inputs("white furnace");
+	std::optional<RNG> secret = judge::secret_inputs();
 	Outside_View view{Furnace_Options{}, 4.0f, 40.0f};
 	if (secret) view = random_outside_view(*secret, view.options);
 	const uint32_t size = 32;
@@ -113,7 +105,7 @@ TEST_CASE("Furnace: a white diffuse sphere in a uniform environment renders the 
 	Pixel_Coverage coverage(view.options.radius, view.distance, view.v_fov, size, size);
 	for (uint32_t depth : {1u, 2u, 8u}) {
 		CAPTURE(depth);
-		Furnace_Render render = render_square(scene, size, 256, depth, seed_or_public(secret, 41 + depth));
+		Furnace_Render render = render_square(scene, size, 256, depth, judge::seed_or_public(secret, 41 + depth));
 		require_finite(render);
 		bool means_ok = true;
 		for (auto kind : {Pixel_Coverage::sphere, Pixel_Coverage::silhouette, Pixel_Coverage::background}) {
@@ -128,7 +120,7 @@ TEST_CASE("Furnace: a white diffuse sphere in a uniform environment renders the 
 				        "sample's NEW direction and the normal (not the arriving ray's); for this white sphere that "
 				        "weight is exactly 1 (handout §4.2)";
 			}
-			means_ok = check_mean_rgb(render, glm::dvec3(1.0), Z, what, select, if_too_dark());
+			means_ok = check_mean_rgb(render, glm::dvec3(1.0), judge::z_critical(3), what, select, if_too_dark());
 			if (!means_ok && depth == 1 && kind == Pixel_Coverage::sphere && !bsdf_unit_tests_failed()) {
 				bool too_dark = true;
 				for (int c = 0; c < 3; c++) too_dark = too_dark && film_mean(render, c, select).mean < 1.0;
@@ -143,11 +135,11 @@ TEST_CASE("Furnace: a white diffuse sphere in a uniform environment renders the 
 }
 
 TEST_CASE("Furnace: a diffuse sphere of albedo rho under a uniform sky L renders rho * L for max_depth >= 1, "
-          "and black for max_depth 0", "[id:t4.furnace.albedo-under-sky][estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
+          "and black for max_depth 0", "[id:t4.furnace.albedo-under-sky][statistical:41][estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
 	// The sphere is convex: the first bounce sees only the sky, so its radiance is
 	// integral (rho / pi) L cos = rho * L whatever max_depth >= 1. With max_depth = 0 a camera ray
 	// may not scatter (pathtracer.h): the non-emitting sphere is black, the sky still L.
-	std::optional<RNG> secret = secret_inputs("diffuse furnace");
+	std::optional<RNG> secret = judge::secret_inputs();
 	Spectrum rho{0.8f, 0.5f, 0.2f}, sky{0.5f, 1.0f, 2.0f};
 	Outside_View view{Furnace_Options{}, 3.0f, 50.0f};
 	if (secret) {
@@ -163,7 +155,7 @@ TEST_CASE("Furnace: a diffuse sphere of albedo rho under a uniform sky L renders
 	auto on_sky = [&](uint32_t x, uint32_t y) { return coverage(x, y) == Pixel_Coverage::background; };
 	for (uint32_t depth : {0u, 1u, 2u, 5u}) {
 		CAPTURE(depth);
-		Furnace_Render render = render_square(scene, size, 256, depth, seed_or_public(secret, 7 + depth));
+		Furnace_Render render = render_square(scene, size, 256, depth, judge::seed_or_public(secret, 7 + depth));
 		require_finite(render);
 		std::string prefix = "max_depth " + std::to_string(depth) + ", mean of the ";
 		glm::dvec3 expected = depth == 0 ? glm::dvec3(0.0) : glm::dvec3(rho) * glm::dvec3(sky);
@@ -171,21 +163,21 @@ TEST_CASE("Furnace: a diffuse sphere of albedo rho under a uniform sky L renders
 		                               "surface is black: shade returns the emission alone once ray.depth >= "
 		                               "settings.max_depth, handout §4.2)"
 		                             : " (rho * L: one bounce reaches the sky)";
-		bool sphere_ok = check_mean_rgb(render, expected, Z, prefix + to_string(Pixel_Coverage::sphere) + why,
+		bool sphere_ok = check_mean_rgb(render, expected, judge::z_critical(3), prefix + to_string(Pixel_Coverage::sphere) + why,
 		                                on_sphere, if_too_dark());
-		bool sky_ok = check_mean_rgb(render, glm::dvec3(sky), Z, prefix + to_string(Pixel_Coverage::background), on_sky);
+		bool sky_ok = check_mean_rgb(render, glm::dvec3(sky), judge::z_critical(3), prefix + to_string(Pixel_Coverage::background), on_sky);
 		bool noise_ok = check_noise(render, "max_depth " + std::to_string(depth), sphere_ok && sky_ok);
 		if (!sphere_ok || !sky_ok || !noise_ok) return;
 	}
 	check_probe(scene, size, secret);
 }
 
-TEST_CASE("Furnace: inside an emitting diffuse sphere, max_depth D gives Le * (1 + rho + ... + rho^D)", "[id:t4.furnace.emitting-inside][estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
+TEST_CASE("Furnace: inside an emitting diffuse sphere, max_depth D gives Le * (1 + rho + ... + rho^D)", "[id:t4.furnace.emitting-inside][statistical:37][estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
 	// Every ray inside a closed sphere hits it again. Each hit emits Le and reflects rho of what
 	// arrives, so a path with at most D bounces carries Le * sum_{k=0..D} rho^k (anchors §4). An
 	// off-by-one in the depth test shifts the answer by a whole term, e.g. D = 1 gives
 	// Le (1 + rho + rho^2) instead of Le (1 + rho). D = 5 and 40 exercise Russian roulette.
-	std::optional<RNG> secret = secret_inputs("geometric series");
+	std::optional<RNG> secret = judge::secret_inputs();
 	Spectrum rho{0.5f, 0.7f, 0.3f}, le{1.0f, 0.5f, 2.0f};
 	Furnace_Options options;
 	options.radius = 2.0f;
@@ -202,7 +194,7 @@ TEST_CASE("Furnace: inside an emitting diffuse sphere, max_depth D gives Le * (1
 	Scene scene = sphere_seen_from_inside(diffuse_material(rho, le), options, view.eye, view.target, view.v_fov);
 	for (uint32_t depth : {0u, 1u, 2u, 3u, 5u, 40u}) {
 		CAPTURE(depth);
-		Furnace_Render render = render_square(scene, 24, 128, depth, seed_or_public(secret, 100 + depth));
+		Furnace_Render render = render_square(scene, 24, 128, depth, judge::seed_or_public(secret, 100 + depth));
 		require_finite(render);
 		glm::dvec3 expected;
 		for (int c = 0; c < 3; c++) {
@@ -217,7 +209,7 @@ TEST_CASE("Furnace: inside an emitting diffuse sphere, max_depth D gives Le * (1
 		                                      "path that continues with probability q must be divided by q (handout "
 		                                      "§4.3), else check that max_depth counts bounces (handout §4.2)"
 		                                    : "; max_depth counts bounces, handout §4.2";
-		bool mean_ok = check_mean_rgb(render, expected, Z,
+		bool mean_ok = check_mean_rgb(render, expected, judge::z_critical(3),
 		                              "max_depth " + std::to_string(depth) + ": image mean, expected Le * sum_{k=0.." +
 		                                  std::to_string(depth) + "} rho^k (shade adds the emission material.emitted of "
 		                                  "every hit, attenuated by rho per bounce" +
@@ -231,7 +223,7 @@ TEST_CASE("Furnace: inside an emitting diffuse sphere, max_depth D gives Le * (1
 
 TEST_CASE("Furnace: a scene without emitters or environment renders exactly 0", "[id:t4.furnace.no-light][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
 	// No light anywhere: every path carries 0, whatever the BSDF does.
-	std::optional<RNG> secret = secret_inputs("black scene");
+	std::optional<RNG> secret = judge::secret_inputs();
 	Spectrum albedo{0.9f};
 	Outside_View view{Furnace_Options{}, 3.0f, 50.0f};
 	view.options.has_environment = false;
@@ -247,7 +239,7 @@ TEST_CASE("Furnace: a scene without emitters or environment renders exactly 0", 
 	Scene inside = sphere_seen_from_inside(diffuse_material(albedo), dark, inside_view.eye, inside_view.target,
 	                                       inside_view.v_fov);
 	for (const Scene* scene : {&outside, &inside}) {
-		Furnace_Render render = render_square(*scene, 16, 16, 8, seed_or_public(secret, 3));
+		Furnace_Render render = render_square(*scene, 16, 16, 8, judge::seed_or_public(secret, 3));
 		require_finite(render);
 		double largest = 0.0;
 		for (const Pixel_Stats& p : render.film.pixels) largest = std::max({largest, p.mean.x, p.mean.y, p.mean.z});
@@ -258,12 +250,12 @@ TEST_CASE("Furnace: a scene without emitters or environment renders exactly 0", 
 	}
 }
 
-TEST_CASE("Furnace far from the origin: new rays must leave their surface at any scale (spawn_ray)", "[id:t4.furnace.far-from-origin][estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
+TEST_CASE("Furnace far from the origin: new rays must leave their surface at any scale (spawn_ray)", "[id:t4.furnace.far-from-origin][statistical:17][estimate][fn:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
 	// The same diffuse sphere as above, moved to 10^4 from the origin. Float coordinates there are
 	// 10^-3 apart, so a hit point may lie that far inside the sphere: a new ray whose dist_bounds
 	// start at a fixed small distance (1e-4, say) hits its own surface again, an extra "bounce"
 	// that darkens the sphere. The offset must grow with |hit.position| (handout §4.2).
-	std::optional<RNG> secret = secret_inputs("far from the origin");
+	std::optional<RNG> secret = judge::secret_inputs();
 	Spectrum rho{0.8f, 0.5f, 0.2f};
 	Outside_View view{Furnace_Options{}, 3.0f, 50.0f};
 	view.options.center = Vec3{1e4f, -1e4f, 1e4f};
@@ -286,9 +278,9 @@ TEST_CASE("Furnace far from the origin: new rays must leave their surface at any
 	Scene scene = sphere_seen_from_outside(diffuse_material(rho), view.options, view.distance, view.v_fov);
 	Pixel_Coverage coverage(view.options.radius, view.distance, view.v_fov, size, size);
 	auto on_sphere = [&](uint32_t x, uint32_t y) { return coverage(x, y) == Pixel_Coverage::sphere; };
-	Furnace_Render render = render_square(scene, size, 256, 2, seed_or_public(secret, 5));
+	Furnace_Render render = render_square(scene, size, 256, 2, judge::seed_or_public(secret, 5));
 	require_finite(render);
-	bool mean_ok = check_mean_rgb(render, glm::dvec3(rho), Z,
+	bool mean_ok = check_mean_rgb(render, glm::dvec3(rho), judge::z_critical(3),
 	                              "sphere centred at " + centre + ", mean of the " +
 	                                  std::string(to_string(Pixel_Coverage::sphere)) + " (expected rho * L_env)",
 	                              on_sphere, if_too_dark());

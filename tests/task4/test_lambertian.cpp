@@ -10,7 +10,6 @@
 #include "material.h"
 #include "statistics.h"
 #include "student_overlapped.h"
-#include "student_secret_inputs.h"
 
 #include "lab_catch2.h"
 
@@ -52,9 +51,9 @@ struct Inputs {
 	uint64_t seed = 0; // for the generators; 0 means the public seeds
 };
 
-Inputs inputs(const std::string& test_case) {
+Inputs inputs() {
 	Inputs in;
-	std::optional<RNG> secret = secret_inputs(test_case);
+	std::optional<RNG> secret = judge::secret_inputs();
 	if (!secret) return in;
 	RNG& rng = *secret;
 	in.albedo = Spectrum{0.05f + 0.95f * rng.unit(), 0.05f + 0.95f * rng.unit(), 0.05f + 0.95f * rng.unit()};
@@ -62,7 +61,7 @@ Inputs inputs(const std::string& test_case) {
 	               random_direction(rng, 0.002f, 0.02f), random_direction(rng, -1.0f, -0.9f),
 	               random_direction(rng, -0.9f, -0.2f)};
 	for (Vec3& d : in.in_dirs) d = random_direction(rng, 0.02f, 1.0f);
-	in.seed = seed_or_public(secret, 0);
+	in.seed = judge::seed_or_public(secret, 0);
 	return in;
 }
 
@@ -81,7 +80,7 @@ BSDF lambertian(Spectrum albedo) {
 } // namespace
 
 TEST_CASE("Lambertian evaluate: albedo / pi, without the cosine, on out_dir's side; 0 across the surface", "[id:t4.lambertian.evaluate][fn:Lambertian::evaluate]") {
-	const Inputs in = inputs("Lambertian evaluate");
+	const Inputs in = inputs();
 	BSDF_Evaluate request{lambertian(in.albedo), {}};
 	for (Vec3 out : in.out_dirs) {
 		for (Vec3 dir : in.in_dirs) {
@@ -118,7 +117,7 @@ TEST_CASE("Lambertian evaluate: albedo / pi, without the cosine, on out_dir's si
 }
 
 TEST_CASE("Lambertian pdf: |cos theta_in| / pi on out_dir's side, 0 across, and it integrates to 1", "[id:t4.lambertian.pdf][fn:Lambertian::pdf]") {
-	const Inputs in = inputs("Lambertian pdf");
+	const Inputs in = inputs();
 	// Midpoint rule over cells equal in (cos theta, phi); it is exact for a density linear in
 	// cos theta on each cell (no cell straddles cos theta = 0).
 	const int n_cos = 200, n_phi = 64;
@@ -163,7 +162,7 @@ TEST_CASE("Lambertian pdf: |cos theta_in| / pi on out_dir's side, 0 across, and 
 }
 
 TEST_CASE("Lambertian scatter: unit in_dir on out_dir's side, attenuation = evaluate, f |cos| / pdf = albedo", "[id:t4.lambertian.scatter][fn:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
-	const Inputs in = inputs("Lambertian scatter");
+	const Inputs in = inputs();
 	const Spectrum albedo = in.albedo;
 	constexpr size_t SAMPLES = 10000; // per out_dir
 	BSDF_Scatter request{lambertian(albedo), {}, RNG_State::of(in.seed ? RNG(in.seed) : RNG(4, 1))};
@@ -227,14 +226,13 @@ TEST_CASE("Lambertian scatter: unit in_dir on out_dir's side, attenuation = eval
 	}
 }
 
-TEST_CASE("Lambertian scatter: directions follow the cosine density |cos theta| / pi (chi-square), on both sides", "[id:t4.lambertian.scatter-chi2][fn:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
+TEST_CASE("Lambertian scatter: directions follow the cosine density |cos theta| / pi (chi-square), on both sides", "[id:t4.lambertian.scatter-chi2][statistical:5][fn:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
 	// Cells of equal solid angle: n_cos slices of cos theta in [-1, 1] times n_phi slices of phi.
 	// The probability of cell [c0, c1] x [phi0, phi1] on out_dir's side is
 	// integral |c| / pi dc dphi = |c1^2 - c0^2| / 2 * (2 pi / n_phi) / pi = |c1^2 - c0^2| / n_phi; across
 	// the surface it is 0 and any sample there fails the test.
 	constexpr size_t n_cos = 40, n_phi = 80, samples = 1000000, chunks = 10;
-	const Inputs in = inputs("Lambertian chi-square");
-	const double alpha = stats::sidak(0.01, in.out_dirs.size()); // one chi-square test per out_dir
+	const Inputs in = inputs();
 	for (size_t k = 0; k < in.out_dirs.size(); k++) {
 		Vec3 out = in.out_dirs[k];
 		CAPTURE(out.x, out.y, out.z);
@@ -275,6 +273,7 @@ TEST_CASE("Lambertian scatter: directions follow the cosine density |cos theta| 
 		INFO(invalid << " of " << samples << " sampled directions were not finite unit vectors");
 		REQUIRE(invalid == 0);
 		stats::Chi2_Result r = stats::chi2_test(observed, expected);
+		const double alpha = judge::significance(); // one chi-square test per out_dir
 		INFO("chi-square " << r.statistic << " with " << r.dof << " degrees of freedom, p-value " << r.p_value
 		     << " (reject below " << alpha << "); " << r.observed_in_impossible_cells
 		     << " samples landed across the surface from out_dir (" << side(out) << ")");

@@ -7,7 +7,7 @@
 #include "lab_catch2.h"
 
 TEST_CASE("the graded scene cornell_diffuse renders like its reference image",
-          "[id:t4.image.cornell-diffuse][estimate][task4][image][statistical][uses:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
+          "[id:t4.image.cornell-diffuse][estimate][task4][image][statistical:2][uses:shade][uses:Lambertian::scatter][uses:Lambertian::evaluate][uses:Lambertian::pdf]") {
 	Image_Test test;
 	test.name = "cornell_diffuse";
 	test.hint = "Too dark or too bright: check the estimator f * |cos| / pdf (handout §4.2) and that the Lambertian "

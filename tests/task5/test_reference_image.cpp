@@ -8,7 +8,7 @@
 #include "lab_catch2.h"
 
 TEST_CASE("the graded scene glass_balls renders like its reference image",
-          "[id:t5.image.glass-balls][estimate][task5][image][statistical][uses:Mirror::scatter][uses:Glass::scatter]") {
+          "[id:t5.image.glass-balls][estimate][task5][image][statistical:2][uses:Mirror::scatter][uses:Glass::scatter]") {
 	Image_Test test;
 	test.name = "glass_balls";
 	test.hint = "The glass ball must both reflect (with probability F) and refract (handout §5.2, §5.3), the mirror "

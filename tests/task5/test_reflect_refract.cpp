@@ -7,7 +7,6 @@
 #include "directions.h"
 #include "judge.h"
 #include "material.h"
-#include "student_secret_inputs.h"
 
 #include "lab_catch2.h"
 
@@ -31,7 +30,7 @@ std::vector<Refraction> student_refract(const std::vector<protocol::Refract::Que
 } // namespace
 
 TEST_CASE("reflect mirrors a direction about the normal (0, 1, 0): (x, y, z) -> (-x, y, -z), exactly", "[id:t5.reflect.mirror][fn:reflect]") {
-	std::optional<RNG> secret = secret_inputs("reflect");
+	std::optional<RNG> secret = judge::secret_inputs();
 	std::vector<Vec3> dirs{Vec3{0.0f, 1.0f, 0.0f}, direction(30.0, 0.4), direction(75.0, 2.0), direction(89.0, -1.0),
 	                       direction(50.0, 3.0, true), Vec3{0.6f, 0.0f, 0.8f}};
 	if (secret) {
@@ -52,7 +51,7 @@ TEST_CASE("reflect mirrors a direction about the normal (0, 1, 0): (x, y, z) -> 
 TEST_CASE("refract obeys Snell's law from both sides: n_out sin(theta_out) = n_in sin(theta_in), to 1e-5", "[id:t5.refract.snell][fn:refract]") {
 	// From outside every angle refracts; from inside, angles below the critical angle
 	// (asin(1 / 1.5) = 41.81 degrees for the public index) do.
-	std::optional<RNG> secret = secret_inputs("refract, Snell");
+	std::optional<RNG> secret = judge::secret_inputs();
 	const float ior = secret ? task5::random_ior(*secret) : IOR;
 	std::vector<protocol::Refract::Query> queries;
 	std::vector<double> thetas; // degrees from the normal
@@ -112,7 +111,7 @@ TEST_CASE("refract obeys Snell's law from both sides: n_out sin(theta_out) = n_i
 }
 
 TEST_CASE("refract: beyond the critical angle 41.81 degrees inside glass, total internal reflection", "[id:t5.refract.total-reflection][fn:refract]") {
-	std::optional<RNG> secret = secret_inputs("refract, total internal reflection");
+	std::optional<RNG> secret = judge::secret_inputs();
 	std::vector<double> thetas{41.9, 45.0, 60.0, 80.0, 89.9};
 	double phi = 1.1;
 	if (secret) {
@@ -145,7 +144,7 @@ TEST_CASE("refract: beyond the critical angle 41.81 degrees inside glass, total 
 }
 
 TEST_CASE("refract with index of refraction 1 passes straight through: in_dir = -out_dir", "[id:t5.refract.index-one][fn:refract]") {
-	std::optional<RNG> secret = secret_inputs("refract, index 1");
+	std::optional<RNG> secret = judge::secret_inputs();
 	std::vector<Vec3> dirs{direction(0.0, 0.0), direction(35.0, 1.0), direction(80.0, 2.5), direction(60.0, 4.0, true)};
 	if (secret) {
 		for (Vec3& d : dirs) d = direction(task5::uniform(*secret, 0.0, 89.0), task5::random_azimuth(*secret), d.y < 0.0f);

@@ -15,12 +15,13 @@ Vec3 direction_in_cone(RNG& rng, Vec3 axis, float cos_min, float cos_max) {
 	return glm::normalize(Frame::from_normal(glm::normalize(axis)).to_world(local));
 }
 
-Lit_Point lit_point(const std::string& what) {
-	if (!judge::secret_seed()) {
+Lit_Point lit_point() {
+	std::optional<RNG> secret = judge::secret_inputs();
+	if (!secret) {
 		return Lit_Point{Vec3{0.2f, 0.0f, -0.1f}, glm::normalize(Vec3{0.25f, 1.0f, -0.15f}),
 		                 glm::normalize(Vec3{-0.3f, 1.0f, 0.4f}), 0.5f, 1.0f};
 	}
-	RNG rng = judge::case_generator(what + ": lit point");
+	RNG& rng = *secret;
 	for (;;) {
 		Lit_Point p;
 		p.half_side = 0.3f + 0.4f * rng.unit();
@@ -38,10 +39,9 @@ Lit_Point lit_point(const std::string& what) {
 	}
 }
 
-uint64_t sampling_seed(const std::string& what, uint64_t public_seed) {
-	if (!judge::secret_seed()) return public_seed;
-	RNG rng = judge::case_generator(what + ": sampling seed");
-	return uint64_t(rng.integer()) << 32 | rng.integer();
+uint64_t sampling_seed(uint64_t public_seed) {
+	std::optional<RNG> secret = judge::secret_inputs();
+	return judge::seed_or_public(secret, public_seed);
 }
 
 std::vector<Incoming_Sample> student_samples(const Scene& scene, const Trace& hit, const BSDF& bsdf, Vec3 out_dir,

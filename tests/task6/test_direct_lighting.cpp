@@ -14,10 +14,10 @@
 // the standard error by under 0.5 %, which moves the z-test's threshold by as much.
 #include "direct_lighting_estimators.h"
 #include "film_statistics.h"
-#include "grader_significance.h"
 #include "judge.h"
 #include "light_closed_forms.h"
 #include "light_scenes.h"
+#include "statistics.h"
 #include "task6_inputs.h"
 
 #include "lab_catch2.h"
@@ -60,10 +60,10 @@ uint64_t reference_seed(uint64_t seed) {
 // z-test of the grader's own estimator (the reference's) against the closed form, with its own
 // standard error.
 void check_own_estimate(const Sample_Moments& m, double expected, const std::string& what) {
-	double z = (m.mean - expected) / m.standard_error();
+	double z = (m.mean - expected) / m.standard_error(), critical = judge::z_critical();
 	INFO(what << ": estimated " << m.mean << " +- " << m.standard_error() << " (" << m.n << " samples), closed form "
-	          << expected << ", z = " << z << " (critical " << task6::z_critical() << ")");
-	CHECK(std::abs(z) <= task6::z_critical());
+	          << expected << ", z = " << z << " (critical " << critical << ")");
+	CHECK(std::abs(z) <= critical);
 }
 
 // The student's estimate against the closed form: the student's noise against the reference's, and
@@ -71,7 +71,7 @@ void check_own_estimate(const Sample_Moments& m, double expected, const std::str
 // mean wanders beyond the reference's standard error too, and the message says so.
 void check_estimate(const std::vector<double>& student_samples, const std::vector<double>& reference_samples,
                     double expected, const std::string& what, const std::string& if_biased = "") {
-	Paired_Noise noise = compare_noise(student_samples, reference_samples, task6::check_alpha());
+	Paired_Noise noise = compare_noise(student_samples, reference_samples, judge::significance());
 	{
 		INFO(what << ": too noisy: " << describe(noise, "batch") << ". Under a small light, light sampling "
 		          "is what keeps the noise down: a fair coin between the strategies, and the mixture's pdf for every "
@@ -80,13 +80,13 @@ void check_estimate(const std::vector<double>& student_samples, const std::vecto
 	}
 	Sample_Moments student = moments(student_samples), reference = moments(reference_samples);
 	double error = standard_error(reference, student.n);
-	double z = (student.mean - expected) / error;
+	double z = (student.mean - expected) / error, critical = judge::z_critical();
 	INFO(what << ": estimated " << student.mean << " +- " << error << " (" << student.n
 	          << " samples; the standard error of the reference's estimator), closed form " << expected << ", z = "
-	          << z << " (critical " << task6::z_critical() << ")"
+	          << z << " (critical " << critical << ")"
 	          << (noise.pass ? if_biased : "; your estimator is noisier than the reference's (above), so its mean "
 	                                     "strays further"));
-	CHECK(std::abs(z) <= task6::z_critical());
+	CHECK(std::abs(z) <= critical);
 }
 
 // A closed-form test case's probe (DESIGN.md, decided point 7): its scene with a black blocker that
@@ -96,7 +96,7 @@ void check_estimate(const std::vector<double>& student_samples, const std::vecto
 // against the reference's (two checks).
 void check_probe(const std::vector<double>& student_samples, const std::vector<double>& reference_samples,
                  const std::string& what) {
-	Paired_Noise noise = compare_noise(student_samples, reference_samples, task6::check_alpha());
+	Paired_Noise noise = compare_noise(student_samples, reference_samples, judge::significance());
 	{
 		INFO(what << ": too noisy: " << describe(noise, "batch") << " (handout §6.1, §6.2)");
 		CHECK(noise.pass);
@@ -104,9 +104,10 @@ void check_probe(const std::vector<double>& student_samples, const std::vector<d
 	Sample_Moments student = moments(student_samples), reference = moments(reference_samples);
 	double error = std::sqrt(reference.variance / double(student.n) + reference.variance / double(reference.n));
 	// Float rounding allowed as the furnaces allow it (film_statistics.h, FLOAT_SLACK).
-	double allowed = task6::z_critical() * error + FLOAT_SLACK * std::max(1.0, std::abs(reference.mean));
+	double critical = judge::z_critical();
+	double allowed = critical * error + FLOAT_SLACK * std::max(1.0, std::abs(reference.mean));
 	INFO(what << ": estimated " << student.mean << ", the reference's estimate " << reference.mean << " +- " << error
-	          << " (" << student.n << " samples each; allowed difference " << allowed << " = " << task6::z_critical()
+	          << " (" << student.n << " samples each; allowed difference " << allowed << " = " << critical
 	          << " standard errors + float rounding). A blocker hides part of the light: light sampling must aim "
 	             "only at what the light sends, and a sample whose ray is blocked carries no light (handout §6.2)");
 	CHECK(std::abs(student.mean - reference.mean) <= allowed);
@@ -156,10 +157,10 @@ Render_Settings one_pixel(uint64_t seed) {
 } // namespace
 
 TEST_CASE("BSDF sampling, light sampling and the mixture all estimate the light Lambert's formula gives",
-          "[id:t6.lighting.lambert][estimate][task6][uses:sample_incoming]") {
+          "[id:t6.lighting.lambert][statistical:6][estimate][task6][uses:sample_incoming]") {
 	// A tilted, off-centre receiver under a square light (public: half-side 0.5, height 1, radiance
 	// 1): L_o = rho E / pi, E from Lambert's formula for polygons.
-	Lit_Point lit = lit_point("three strategies");
+	Lit_Point lit = lit_point();
 	Scene scene = ceiling_light_scene(lit.half_side, lit.height);
 	Pathtracer pt(scene, Render_Settings{});
 	double e = closed_form::polygon_irradiance(ceiling_square_corners(lit.half_side, lit.height),
@@ -167,9 +168,9 @@ TEST_CASE("BSDF sampling, light sampling and the mixture all estimate the light 
 	double expected = RHO * e / M_PI;
 	Trace point = surface_point(lit.position, lit.normal);
 
-	uint64_t bsdf_seed = sampling_seed("three strategies, BSDF", 11);
-	uint64_t lights_seed = sampling_seed("three strategies, lights", 12);
-	uint64_t mixture_seed = sampling_seed("three strategies, mixture", 13);
+	uint64_t bsdf_seed = sampling_seed(11);
+	uint64_t lights_seed = sampling_seed(12);
+	uint64_t mixture_seed = sampling_seed(13);
 	check_own_estimate(moments(estimate(pt, Strategy::bsdf, point, lit.out_dir, 100000, bsdf_seed)), expected,
 	                   "BSDF sampling alone (the grader's own estimator: a failure here is a framework bug)");
 	check_own_estimate(moments(estimate(pt, Strategy::lights, point, lit.out_dir, 100000, lights_seed)), expected,
@@ -186,20 +187,20 @@ TEST_CASE("BSDF sampling, light sampling and the mixture all estimate the light 
 	                       Vec3{0.4f * lit.half_side, 0.0f, 0.0f},
 	            0.4f * lit.half_side);
 	probe.commit();
-	uint64_t probe_seed = sampling_seed("three strategies, probe", 14);
+	uint64_t probe_seed = sampling_seed(14);
 	check_probe(estimate_mixture(probe, point, lit.out_dir, 100000, probe_seed),
 	            estimate(Pathtracer(probe, Render_Settings{}), Strategy::mixture, point, lit.out_dir, 100000,
 	                     reference_seed(probe_seed)),
 	            "the probe, this lit point with a blocker hiding part of the light");
 }
 
-TEST_CASE("the mixture estimates the light from a sphere: E = pi L (r/d)^2 cos(beta)", "[id:t6.lighting.sphere-light][estimate][task6][uses:sample_incoming]") {
+TEST_CASE("the mixture estimates the light from a sphere: E = pi L (r/d)^2 cos(beta)", "[id:t6.lighting.sphere-light][statistical:4][estimate][task6][uses:sample_incoming]") {
 	// A sphere light of radius 0.5 at distance 2 along a direction 30 degrees from the normal. With a
 	// grading seed: radius 0.3 to 0.6, distance 1.5 to 3, 0 to 55 degrees from the normal, so that
 	// the whole sphere stays above the horizon (beta + asin(r / d) < 79 degrees).
 	double radius = 0.5, distance = 2.0, beta = M_PI / 6.0;
-	if (judge::secret_seed()) {
-		RNG rng = judge::case_generator("sphere light");
+	if (std::optional<RNG> secret = judge::secret_inputs()) {
+		RNG& rng = *secret;
 		radius = 0.3 + 0.3 * rng.unit(), distance = 1.5 + 1.5 * rng.unit(), beta = glm::radians(55.0 * rng.unit());
 	}
 	Scene scene;
@@ -209,7 +210,7 @@ TEST_CASE("the mixture estimates the light from a sphere: E = pi L (r/d)^2 cos(b
 	Vec3 normal{float(std::sin(beta)), float(std::cos(beta)), 0.0f};
 	double expected = RHO * closed_form::sphere_irradiance(radius, distance, std::cos(beta), 1.0) / M_PI;
 	Trace point = surface_point(Vec3{0.0f}, normal);
-	uint64_t seed = sampling_seed("sphere light", 21);
+	uint64_t seed = sampling_seed(21);
 	check_estimate(estimate_mixture(scene, point, normal, 100000, seed),
 	               estimate(Pathtracer(scene, Render_Settings{}), Strategy::mixture, point, normal, 100000,
 	                        reference_seed(seed)),
@@ -222,14 +223,14 @@ TEST_CASE("the mixture estimates the light from a sphere: E = pi L (r/d)^2 cos(b
 	add_object(probe, Sphere{float(0.25 * radius)}, add_material(probe, diffuse_material(Spectrum{0.0f}), "blocker"),
 	           glm::translate(Mat4{1.0f}, Vec3{float(0.15 * radius), float(0.5 * distance), 0.0f}));
 	probe.commit();
-	uint64_t probe_seed = sampling_seed("sphere light, probe", 22);
+	uint64_t probe_seed = sampling_seed(22);
 	check_probe(estimate_mixture(probe, point, normal, 100000, probe_seed),
 	            estimate(Pathtracer(probe, Render_Settings{}), Strategy::mixture, point, normal, 100000,
 	                     reference_seed(probe_seed)),
 	            "the probe, this sphere light with a black sphere hiding part of it");
 }
 
-TEST_CASE("under a small light, the mixture has a lower variance than BSDF sampling alone", "[id:t6.lighting.lower-variance][task6][uses:sample_incoming]") {
+TEST_CASE("under a small light, the mixture has a lower variance than BSDF sampling alone", "[id:t6.lighting.lower-variance][statistical:1][task6][uses:sample_incoming]") {
 	// Square of half-side 0.1 at height 1: BSDF sampling finds it 1.3% of the time, light sampling
 	// every time. One-sided z-test of var(BSDF) - var(mixture) > 0, with the sampling variance of
 	// a sample variance, (m4 - s^4) / n.
@@ -237,12 +238,12 @@ TEST_CASE("under a small light, the mixture has a lower variance than BSDF sampl
 	Pathtracer pt(scene, Render_Settings{});
 	Trace point = surface_point(Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f});
 	Vec3 out_dir{0.0f, 1.0f, 0.0f};
-	Sample_Moments bsdf = moments(estimate(pt, Strategy::bsdf, point, out_dir, 100000, sampling_seed("variance, BSDF", 31)));
+	Sample_Moments bsdf = moments(estimate(pt, Strategy::bsdf, point, out_dir, 100000, sampling_seed(31)));
 	Sample_Moments mixture =
-		moments(estimate_mixture(scene, point, out_dir, 100000, sampling_seed("variance, mixture", 32)));
+		moments(estimate_mixture(scene, point, out_dir, 100000, sampling_seed(32)));
 	double z = (bsdf.variance - mixture.variance) /
 	           std::sqrt(bsdf.variance_of_variance() + mixture.variance_of_variance());
-	double critical = stats::normal_quantile(1.0 - task6::check_alpha());
+	double critical = stats::normal_quantile(1.0 - judge::significance()); // one-sided
 	INFO("per-sample variance: BSDF sampling " << bsdf.variance << ", sample_incoming " << mixture.variance
 	                                           << " (z = " << z << ", must exceed " << critical
 	                                           << "). Light sampling is what makes small lights cheap "
@@ -250,7 +251,7 @@ TEST_CASE("under a small light, the mixture has a lower variance than BSDF sampl
 	CHECK(z > critical);
 }
 
-TEST_CASE("a diffuse floor under a square light renders as rho E / pi (max_depth 1)", "[id:t6.lighting.floor][estimate][task6][uses:sample_incoming]") {
+TEST_CASE("a diffuse floor under a square light renders as rho E / pi (max_depth 1)", "[id:t6.lighting.floor][statistical:6][estimate][task6][uses:sample_incoming]") {
 	// Lambert's formula for a parallel square of half-side a at height h, under its centre:
 	// a/h = 0.5 -> E = 0.752275 L, a/h = 1 -> E = 1.740840 L (light_closed_forms.h). With a grading
 	// seed, two squares of half-side 0.3 to 1.2 at height 0.7 to 1.5, of radiance 0.5 to 3.
@@ -261,8 +262,8 @@ TEST_CASE("a diffuse floor under a square light renders as rho E / pi (max_depth
 		uint64_t seed;
 	};
 	std::vector<Case> cases{Case{0.5f, 1.0f, 2.0f, 41}, Case{1.0f, 1.0f, 1.0f, 42}};
-	if (judge::secret_seed()) {
-		RNG rng = judge::case_generator("lit floor");
+	if (std::optional<RNG> secret = judge::secret_inputs()) {
+		RNG& rng = *secret;
 		for (Case& c : cases) {
 			c = Case{0.3f + 0.9f * rng.unit(), 0.7f + 0.8f * rng.unit(), 0.5f + 2.5f * rng.unit(),
 			         uint64_t(rng.integer()) << 32 | rng.integer()};
@@ -298,7 +299,7 @@ TEST_CASE("a light hidden behind a blocker gives exactly 0", "[id:t6.lighting.bl
 	Scene scene = lit_floor(RHO, 0.5f, 1.0f, Spectrum{1.0f}, Vec3{2.0f, 0.1f, 0.0f});
 	add_object(scene, ceiling_square(0.6f, 0.5f), add_material(scene, diffuse_material(Spectrum{0.0f}), "blocker"));
 	scene.commit();
-	std::vector<Spectrum> values = render_samples(scene, one_pixel(sampling_seed("occlusion", 51)), 20000);
+	std::vector<Spectrum> values = render_samples(scene, one_pixel(sampling_seed(51)), 20000);
 	for (size_t i = 0; i < values.size(); i++) {
 		Spectrum v = values[i];
 		INFO("sample " << i << " of an occluded light: (" << v.r << ", " << v.g << ", " << v.b

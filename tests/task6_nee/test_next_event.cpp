@@ -15,10 +15,11 @@
 #include "direct_lighting_estimators.h"
 #include "estimator.h"
 #include "frame.h"
+#include "judge.h"
 #include "light_closed_forms.h"
 #include "light_scenes.h"
 #include "nee_integrator.h"
-#include "nee_significance.h"
+#include "statistics.h"
 #include "student_calls.h"
 #include "student_renders.h"
 
@@ -121,7 +122,7 @@ std::vector<double> reference_pixel_samples(const Scene& scene, Render_Settings 
 
 // The student's noise against the reference's (one check); whether it passed.
 bool check_noise(const std::vector<double>& student, const std::vector<double>& reference, const std::string& what) {
-	Paired_Noise noise = compare_noise(student, reference, task6_nee::check_alpha());
+	Paired_Noise noise = compare_noise(student, reference, judge::significance());
 	INFO(what << ": too noisy: " << describe(noise, "batch") << ". Both shares weighted by the power "
 	          "heuristic keep a light sample's weight bounded: f L |cos| w / pdf with w = power_heuristic(light pdf, "
 	          "BSDF pdf) (handout §6.5)");
@@ -142,12 +143,12 @@ void check_closed_form(const std::vector<double>& student_samples, const std::ve
 	bool quiet = check_noise(student_samples, reference_samples, what); // first: noise makes the mean stray
 	Sample_Moments student = moments(student_samples), reference = moments(reference_samples);
 	double error = standard_error(reference, student.n);
-	double z = (student.mean - expected) / error;
+	double z = (student.mean - expected) / error, critical = judge::z_critical();
 	INFO(what << ": estimated " << student.mean << " +- " << error << " (" << student.n
 	          << " samples; the standard error of the reference's estimator), closed form " << expected << ", z = "
-	          << z << " (critical " << task6_nee::z_critical() << ")"
+	          << z << " (critical " << critical << ")"
 	          << (quiet ? "" : "; your estimator is noisier than the reference's (above), so its mean strays further"));
-	CHECK(std::abs(z) <= task6_nee::z_critical());
+	CHECK(std::abs(z) <= critical);
 }
 
 // A 1 x 1 film that sees only the floor of lit_floor (light_scenes.h).
@@ -187,7 +188,7 @@ TEST_CASE("estimate_direct gives exactly 0 for a light behind the surface", "[id
 }
 
 TEST_CASE("estimate_direct's mean is the light-sampled share the power heuristic gives it",
-          "[id:t6nee.direct.mean][estimate][task6_nee][fn:estimate_direct]") {
+          "[id:t6nee.direct.mean][statistical:2][estimate][task6_nee][fn:estimate_direct]") {
 	// Two-sample z-test against the grader's own light samples, weighted by p_l^2 / (p_l^2 + p_b^2).
 	Scene scene = ceiling_light_scene(0.5f, 1.0f);
 	Pathtracer pt(scene, seeded_settings());
@@ -200,20 +201,20 @@ TEST_CASE("estimate_direct's mean is the light-sampled share the power heuristic
 	// Both means estimate the same value if the student's is right; the difference's standard error
 	// is the grader's per-sample deviation over both sample counts (never the student's own).
 	double error = std::sqrt(grader.variance * (1.0 / double(student.n) + 1.0 / double(grader.n)));
-	double z = (student.mean - grader.mean) / error;
+	double z = (student.mean - grader.mean) / error, critical = judge::z_critical();
 	{
 		INFO("estimate_direct averaged " << student.mean << "; light samples weighted by the power heuristic average "
 		                                 << grader.mean << ", difference +- " << error << ", z = " << z
-		                                 << " (critical " << task6_nee::z_critical()
+		                                 << " (critical " << critical
 		                                 << "). Return f * L * |cos| * w / pdf with w = power_heuristic(light pdf, "
 		                                    "BSDF pdf) (handout §6.5)");
-		CHECK(std::abs(z) <= task6_nee::z_critical());
+		CHECK(std::abs(z) <= critical);
 	}
 	check_noise(student_samples, own, "estimate_direct at a tilted receiver under a square light");
 }
 
 TEST_CASE("light-sampled and BSDF-sampled shares add up to Lambert's formula",
-          "[id:t6nee.direct.lambert][estimate][task6_nee][uses:estimate_direct][uses:power_heuristic]") {
+          "[id:t6nee.direct.lambert][statistical:4][estimate][task6_nee][uses:estimate_direct][uses:power_heuristic]") {
 	SECTION("a square light over a tilted receiver") {
 		Scene scene = ceiling_light_scene(0.5f, 1.0f);
 		Pathtracer pt(scene, seeded_settings());
@@ -248,7 +249,7 @@ TEST_CASE("light-sampled and BSDF-sampled shares add up to Lambert's formula",
 }
 
 TEST_CASE("the NEE integrator renders a floor under a square light as rho E / pi (max_depth 1)",
-          "[id:t6nee.integrator.floor][estimate][task6_nee][uses:estimate_direct][uses:power_heuristic]") {
+          "[id:t6nee.integrator.floor][statistical:4][estimate][task6_nee][uses:estimate_direct][uses:power_heuristic]") {
 	struct Case {
 		float half_side, height, radiance;
 		uint64_t seed;
@@ -266,7 +267,7 @@ TEST_CASE("the NEE integrator renders a floor under a square light as rho E / pi
 }
 
 TEST_CASE("under a small light, next-event estimation is less noisy than BSDF sampling",
-          "[id:t6nee.integrator.lower-variance][task6_nee][uses:estimate_direct][uses:power_heuristic]") {
+          "[id:t6nee.integrator.lower-variance][statistical:1][task6_nee][uses:estimate_direct][uses:power_heuristic]") {
 	// Square of half-side 0.1 at height 1 over a point facing it: one-sided z-test of var(BSDF) -
 	// var(NEE) > 0, with the sampling variance of a sample variance, (m4 - s^4) / n.
 	Scene scene = ceiling_light_scene(0.1f, 1.0f);
@@ -280,7 +281,7 @@ TEST_CASE("under a small light, next-event estimation is less noisy than BSDF sa
 	for (double& v : bsdf) v = reflected_radiance_sample(scene, point, draw(pt, Strategy::bsdf, rng, point, GREY, up));
 	Sample_Moments alone = moments(bsdf);
 	double z = (alone.variance - nee.variance) / std::sqrt(alone.variance_of_variance() + nee.variance_of_variance());
-	double critical = stats::normal_quantile(1.0 - task6_nee::check_alpha());
+	double critical = stats::normal_quantile(1.0 - judge::significance()); // one-sided
 	INFO("per-sample variance: BSDF sampling " << alone.variance << ", next-event estimation " << nee.variance
 	                                           << " (z = " << z << ", must exceed " << critical
 	                                           << "): light samples are what make small lights cheap (handout §6.5)");
@@ -288,7 +289,7 @@ TEST_CASE("under a small light, next-event estimation is less noisy than BSDF sa
 }
 
 TEST_CASE("the NEE integrator renders cornell_small_light like its reference image",
-          "[id:t6nee.image.cornell-small-light][estimate][task6_nee][image][statistical][uses:estimate_direct][uses:power_heuristic]") {
+          "[id:t6nee.image.cornell-small-light][estimate][task6_nee][image][statistical:2][uses:estimate_direct][uses:power_heuristic]") {
 	Image_Test test;
 	test.name = "cornell_small_light";
 	test.hint = "--integrator nee with your estimate_direct and power_heuristic: each share must be weighted by the "
@@ -298,6 +299,5 @@ TEST_CASE("the NEE integrator renders cornell_small_light like its reference ima
 	test.if_noisy = "Both shares weighted by the power heuristic keep a light sample's weight bounded: f L |cos| w / pdf "
 	                "with w = power_heuristic(light pdf, BSDF pdf) (handout §6.5).";
 	test.integrator = "nee";
-	test.alpha = task6_nee::image_test_alpha();
 	check_renders_like_reference(test);
 }

@@ -1,6 +1,6 @@
 #pragma once
 // Shared pieces of the task-7 grader: the requests that hand the student's environment code the
-// judge's inputs (grading/judge/protocol.h), the maps the tests use, and the significance levels.
+// judge's inputs (grading/judge/protocol.h), and the maps the tests use.
 // Expected values never come from the code under test: they are closed forms, or the reference's
 // (the judge links the reference of every task, so uv_to_direction and direction_to_uv called here
 // are the reference's).
@@ -19,30 +19,9 @@
 
 namespace env_test {
 
-// Significance of every statistical test of the grader, and how many tests share it (Šidák):
-// chi-square tests: the uniform sampler and four importance-sampled maps (test_uniform.cpp,
-// test_importance.cpp); the estimates: z-tests of the constant map's three channels
-// (test_importance.cpp), two one-texel maps (test_bright_texel.cpp), and three channels of three
-// groups of pixels in test_render.cpp (sky and sphere under Env_Map, sphere under Env_Constant)
-// and the block means of its two probes, and the noise of each of those seven estimates
-// (paired_noise.h). z-tests take their standard error from the reference's estimator
-// (reference_weights below, the judge's render in test_render.cpp), never from the student's
-// samples.
-constexpr double ALPHA = 0.01;
-constexpr size_t CHI2_TESTS = 5;
-constexpr size_t Z_TESTS = 3 + 2 + 9 + 24;
-static_assert(PROBE_CHECKS == 12, "the two probes' block means counted above");
-constexpr size_t NOISE_CHECKS = 1 + 2 + 2 + 2;
-
-inline double chi2_alpha() {
-	return stats::sidak(ALPHA, CHI2_TESTS);
-}
-inline double noise_alpha() {
-	return stats::sidak(ALPHA, Z_TESTS + NOISE_CHECKS);
-}
-inline double z_critical() {
-	return stats::two_sided_z(noise_alpha());
-}
+// z-tests take their standard error from the reference's estimator (reference_weights below, the
+// judge's render in test_render.cpp), never from the student's samples; every statistical check is
+// made at the grader's level for one check (judge.h: significance).
 
 // ---- Inputs ----------------------------------------------------------------------------------------
 
@@ -53,10 +32,9 @@ inline Vec3 direction_at_texel_point(uint32_t w, uint32_t h, double x, double y)
 }
 
 // The seed of a test case's random numbers: `public_seed`, or one drawn from the grading seed.
-inline uint64_t sampling_seed(const std::string& what, uint64_t public_seed) {
-	if (!judge::secret_seed()) return public_seed;
-	RNG rng = judge::case_generator(what + ": sampling seed");
-	return uint64_t(rng.integer()) << 32 | rng.integer();
+inline uint64_t sampling_seed(uint64_t public_seed) {
+	std::optional<RNG> secret = judge::secret_inputs();
+	return judge::seed_or_public(secret, public_seed);
 }
 
 // n points rng.unit2() of a generator seeded with `seed`, in order.
@@ -147,8 +125,9 @@ struct Texel {
 	uint32_t i, j;
 };
 inline Texel inner_bright_texel() {
-	if (!judge::secret_seed()) return Texel{11, 6};
-	RNG rng = judge::case_generator("bright texel");
+	std::optional<RNG> secret = judge::secret_inputs();
+	if (!secret) return Texel{11, 6};
+	RNG& rng = *secret;
 	return Texel{1 + rng.integer(30), 1 + rng.integer(14)};
 }
 inline std::string texel_name(Texel t) {
@@ -174,8 +153,8 @@ inline HDR_Image gradient_map(uint32_t w = 32, uint32_t h = 16) {
 inline HDR_Image sky_map() {
 	const uint32_t w = 64, h = 32;
 	Texel sun{40, 9};
-	if (judge::secret_seed()) {
-		RNG rng = judge::case_generator("sun");
+	if (std::optional<RNG> secret = judge::secret_inputs()) {
+		RNG& rng = *secret;
 		sun = Texel{rng.integer(w - 1), rng.integer(h / 2 - 1)};
 	}
 	HDR_Image image(w, h);

@@ -72,7 +72,7 @@ TEST_CASE("one bright texel: importance samples stay in the texels its light rea
 	for (const Bright_Texel& t : cases()) {
 		const size_t N = 100000;
 		std::vector<Vec3> samples =
-			student_image_sampler(t.map(), unit_points(sampling_seed("bright texel reach", 78), N), {}).queries.samples;
+			student_image_sampler(t.map(), unit_points(sampling_seed(78), N), {}).queries.samples;
 		size_t outside = 0;
 		std::string first;
 		for (Vec3 d : samples) {
@@ -100,7 +100,7 @@ TEST_CASE("one bright texel: the pdf is positive wherever its radiance is, and L
 	for (const Bright_Texel& t : cases()) {
 		const double bound = 32.0 * radiance_integral(t);
 		Env_Map reference(t.map(), false);
-		RNG rng(sampling_seed("bright texel pdf", 79));
+		RNG rng(sampling_seed(79));
 		struct Point {
 			double x, y, L;
 			Vec3 d;
@@ -148,12 +148,12 @@ TEST_CASE("one bright texel: the pdf is positive wherever its radiance is, and L
 	}
 }
 
-TEST_CASE("one bright texel: the weights L / pdf average the integral of its radiance", "[id:t7.bright-texel.integral][estimate][task7][bright-texel][statistical][uses:Env_Map::evaluate][uses:Image::sample][uses:Image::pdf]") {
+TEST_CASE("one bright texel: the weights L / pdf average the integral of its radiance", "[id:t7.bright-texel.integral][statistical:4][estimate][task7][bright-texel][uses:Env_Map::evaluate][uses:Image::sample][uses:Image::pdf]") {
 	// E[L / pdf] over importance samples = the integral of L over the directions where pdf > 0: all
 	// of it only if the pdf covers the whole bilinear footprint (two of the grader's z-tests).
 	for (const Bright_Texel& t : cases()) {
 		const size_t N = 200000;
-		const uint64_t seed = sampling_seed("bright texel weights", 80);
+		const uint64_t seed = sampling_seed(80);
 		// The reference's weights are drawn while the subject samples.
 		auto reference_drawn = std::async(std::launch::async, [&] { return reference_weights(t.map(), seed, N)[1]; });
 		Env_Samples samples = student_env_samples(t.map(), true, unit_points(seed, N));
@@ -171,17 +171,18 @@ TEST_CASE("one bright texel: the weights L / pdf average the integral of its rad
 		std::vector<double> reference_samples = reference_drawn.get();
 		Sample_Moments student = moments(weights), reference = moments(reference_samples);
 		double expected = radiance_integral(t), error = standard_error(reference, N);
-		double allowed = z_critical() * error + 1e-5 * expected;
+		double critical = judge::z_critical();
+		double allowed = critical * error + 1e-5 * expected;
 		INFO("map of " << W << " x " << H << " texels, black except " << t.name << " (value 1): mean of L / pdf over "
 		               << N << " importance samples " << student.mean
 		               << ", expected the integral of the bilinear radiance " << expected << " (allowed difference "
-		               << allowed << ", " << z_critical() << " standard errors of the reference's estimate); "
+		               << allowed << ", " << critical << " standard errors of the reference's estimate); "
 		               << not_finite
 		               << " weights were not finite. Too small: the pdf misses part of the lit area (handout §7.4); "
 		                  "check also evaluate (§7.3)");
 		CHECK(not_finite == 0);
 		CHECK(std::abs(student.mean - expected) <= allowed);
-		Paired_Noise noise = compare_noise(weights, reference_samples, noise_alpha(), 1e-5 * expected);
+		Paired_Noise noise = compare_noise(weights, reference_samples, judge::significance(), 1e-5 * expected);
 		INFO("too noisy: " << describe(noise, "batch") << ". Where the pdf is too small for the light the weights "
 		     "grow without bound: the table must cover each texel's whole bilinear footprint (handout §7.4)");
 		CHECK(noise.pass);

@@ -22,10 +22,10 @@ struct Pattern {
 				                          0.5f + 0.25f * float((3 * i + 5 * j) % 7)};
 			}
 		}
-		if (!judge::secret_seed()) return;
-		RNG rng = judge::case_generator("evaluate pattern");
+		std::optional<RNG> secret = judge::secret_inputs();
+		if (!secret) return;
 		for (Spectrum& value : image.pixels) {
-			value = Spectrum{1.0f + 59.0f * rng.unit(), 1.0f + 59.0f * rng.unit(), 0.5f + 1.5f * rng.unit()};
+			value = Spectrum{1.0f + 59.0f * secret->unit(), 1.0f + 59.0f * secret->unit(), 0.5f + 1.5f * secret->unit()};
 		}
 	}
 	Spectrum texel(uint32_t i, uint32_t j) const {

@@ -150,7 +150,7 @@ TEST_CASE("Image::pdf integrates to 1 over the sphere", "[id:t7.importance.pdf-i
 	}
 }
 
-TEST_CASE("Image::sample draws directions with the density Image::pdf (chi-square)", "[id:t7.importance.sample-chi2][task7][importance][statistical][fn:Image::sample][uses:Image (tables)][uses:Image::pdf][uses:uv_to_direction]") {
+TEST_CASE("Image::sample draws directions with the density Image::pdf (chi-square)", "[id:t7.importance.sample-chi2][statistical:4][task7][importance][fn:Image::sample][uses:Image (tables)][uses:Image::pdf][uses:uv_to_direction]") {
 	// Four of the grader's CHI2_TESTS. The cells refine the texel grid 2 x 2, so each cell lies in one
 	// texel, where pdf * sin(theta) is constant and the expected counts are exact.
 	const Named_Map maps[] = {{"one bright texel", inner_texel_map()},
@@ -162,7 +162,7 @@ TEST_CASE("Image::sample draws directions with the density Image::pdf (chi-squar
 		settings[i].theta_cells = 2 * maps[i].image.h;
 		settings[i].phi_cells = 2 * maps[i].image.w;
 		settings[i].integration_resolution = 2;
-		settings[i].seed = sampling_seed("importance chi-square " + maps[i].name, 700 + i);
+		settings[i].seed = sampling_seed(700 + i);
 	}
 	auto request = [&](size_t i) {
 		return protocol::Image_Sampler{maps[i].image, unit_points(settings[i].seed, settings[i].samples),
@@ -174,27 +174,28 @@ TEST_CASE("Image::sample draws directions with the density Image::pdf (chi-squar
 	};
 	ask_each_while_using_the_last(std::size(maps), request, count);
 	for (size_t i = 0; i < results.size(); i++) {
+		const double alpha = judge::significance(); // one chi-square test per map
 		INFO("importance samples of " << maps[i].name << " must follow Image::pdf: choose a texel by the cdf, a "
 		     "uniform point inside it in uv, and let pdf divide by 2 pi^2 sin(theta) (handout §7.4). "
-		     << results[i].summary() << "; significance " << chi2_alpha());
-		CHECK(results[i].pass(chi2_alpha()));
+		     << results[i].summary() << "; significance " << alpha);
+		CHECK(results[i].pass(alpha));
 	}
 }
 
-TEST_CASE("a constant map: the weights L / pdf average 4 pi L and stay below twice that", "[id:t7.importance.constant-map][estimate][task7][importance][statistical][uses:Image::sample][uses:Image::pdf]") {
+TEST_CASE("a constant map: the weights L / pdf average 4 pi L and stay below twice that", "[id:t7.importance.constant-map][statistical:4][estimate][task7][importance][uses:Image::sample][uses:Image::pdf]") {
 	// E[L / pdf] = integral of L over the sphere = 4 pi L for any correct pdf (three of the grader's
 	// z-tests). A weight is 4 pi L sin(theta) / sin(theta_row) up to the table's normalization;
 	// sin(theta) / sin(theta_row) < 2 in the rows at the poles (sin(2x) / sin(x) = 2 cos(x) with the
 	// row's centre, and Delta cot(Delta / 2) with its mean), about 1 elsewhere. With a grading seed
 	// each channel of L is drawn in [0.2, 3].
 	Spectrum L{0.5f, 1.0f, 2.0f};
-	if (judge::secret_seed()) {
-		RNG rng = judge::case_generator("constant map");
+	if (std::optional<RNG> secret = judge::secret_inputs()) {
+		RNG& rng = *secret;
 		L = Spectrum{0.2f + 2.8f * rng.unit(), 0.2f + 2.8f * rng.unit(), 0.2f + 2.8f * rng.unit()};
 	}
 	const size_t N = 200000;
 	const HDR_Image map(32, 16, L);
-	const uint64_t seed = sampling_seed("constant map", 76);
+	const uint64_t seed = sampling_seed(76);
 	// The reference's weights are drawn while the subject samples.
 	auto reference_drawn = std::async(std::launch::async, [&] { return reference_weights(map, seed, N); });
 	Env_Samples samples = student_env_samples(map, true, unit_points(seed, N));
@@ -230,14 +231,15 @@ TEST_CASE("a constant map: the weights L / pdf average 4 pi L and stay below twi
 		double mean = moments(weights[c]).mean, expected = 4.0 * M_PI * L[c];
 		double error = standard_error(moments(reference[c]), N);
 		rounding[c] = 1e-5 * expected;
-		double allowed = z_critical() * error + rounding[c]; // plus float rounding
+		double critical = judge::z_critical();
+		double allowed = critical * error + rounding[c]; // plus float rounding
 		INFO("channel " << c << ": mean of L / pdf over " << N << " importance samples of a constant map is " << mean
 		                << ", expected 4 pi L = " << expected << " (allowed difference " << allowed << ", "
-		                << z_critical() << " standard errors of the reference's estimate). sample, pdf and evaluate "
+		                << critical << " standard errors of the reference's estimate). sample, pdf and evaluate "
 		                << "must agree (handout §7.4)");
 		CHECK(std::abs(mean - expected) <= allowed);
 	}
-	Paired_Noise noise = compare_noise(weights, reference, noise_alpha(), rounding);
+	Paired_Noise noise = compare_noise(weights, reference, judge::significance(), rounding);
 	INFO("importance samples of a constant map: too noisy: " << describe(noise, "batch")
 	     << ". The table must weight texels by luminance * sin(theta) and pdf must be what sample draws (handout §7.4)");
 	CHECK(noise.pass);
@@ -246,7 +248,7 @@ TEST_CASE("a constant map: the weights L / pdf average 4 pi L and stay below twi
 TEST_CASE("a black map still gives valid samples and a normalized pdf", "[id:t7.importance.black-map][task7][importance][fn:Image (tables)][uses:Image::sample][uses:Image::pdf]") {
 	// Nothing to importance-sample: the table must not divide by a zero total (handout §7.4).
 	HDR_Image black(16, 8);
-	std::vector<Vec2> us = unit_points(sampling_seed("black map", 77), 1000);
+	std::vector<Vec2> us = unit_points(sampling_seed(77), 1000);
 	std::vector<Vec3> samples = student_image_sampler(black, us, {}).queries.samples;
 	std::vector<float> pdfs = student_image_sampler(black, {}, samples).queries.pdfs;
 	for (size_t n = 0; n < samples.size(); n++) {

@@ -7,7 +7,7 @@
 #include "lab_catch2.h"
 
 TEST_CASE("the graded scene env_overcast renders like its reference image",
-          "[id:t7.image.env-overcast][estimate][task7][image][statistical][uses:Env_Map::sample][uses:Env_Map::pdf][uses:Env_Map::evaluate]") {
+          "[id:t7.image.env-overcast][estimate][task7][image][statistical:2][uses:Env_Map::sample][uses:Env_Map::pdf][uses:Env_Map::evaluate]") {
 	Image_Test test;
 	test.name = "env_overcast";
 	test.hint = "Check that Env_Map::pdf converts the density over the image to solid angle with the Jacobian 2 pi^2 "

@@ -25,10 +25,11 @@ struct Colours {
 	Spectrum albedo{0.8f, 0.5f, 0.2f};
 	uint64_t seed = 7;
 };
-Colours colours(const std::string& what) {
+Colours colours() {
 	Colours c;
-	if (!judge::secret_seed()) return c;
-	RNG rng = judge::case_generator(what);
+	std::optional<RNG> secret = judge::secret_inputs();
+	if (!secret) return c;
+	RNG& rng = *secret;
 	for (int k = 0; k < 3; k++) c.sky[k] = 0.1f + 1.9f * rng.unit(), c.albedo[k] = 0.1f + 0.8f * rng.unit();
 	c.seed = uint64_t(rng.integer()) << 32 | rng.integer();
 	return c;
@@ -51,9 +52,8 @@ Furnace_Render render_sphere(const Environment& environment, const Colours& c) {
 
 // A map whose light no closed form gives: every texel its own colour, a sky bright where it faces
 // one way (public, or drawn from the grading seed).
-HDR_Image probe_map(const std::string& what) {
-	std::optional<RNG> secret;
-	if (judge::secret_seed()) secret = judge::case_generator(what);
+HDR_Image probe_map() {
+	std::optional<RNG> secret = judge::secret_inputs();
 	HDR_Image map(16, 8);
 	Vec3 towards = secret ? glm::normalize(Vec3{secret->unit(), secret->unit(), secret->unit()} - 0.5f)
 	                      : glm::normalize(Vec3{1.0f, 1.0f, 0.5f});
@@ -77,8 +77,8 @@ void check_probe(const Scene& probe, uint64_t seed, const std::string& what) {
 		INFO("non-finite samples in the probe's render (handout §7.4)");
 		CHECK(film.film.non_finite() == 0);
 	}
-	if (!check_like_reference(film, z_critical(), what)) return;
-	check_noise(film, noise_alpha(), what, "sample, pdf and evaluate must describe the same density (handout §7.4)");
+	if (!check_like_reference(film, judge::z_critical(PROBE_CHECKS), what)) return;
+	check_noise(film, judge::significance(), what, "sample, pdf and evaluate must describe the same density (handout §7.4)");
 }
 
 void check_channels(const Furnace_Render& film, const Spectrum& expected, Pixel_Coverage::Kind kind,
@@ -86,7 +86,7 @@ void check_channels(const Furnace_Render& film, const Spectrum& expected, Pixel_
 	Pixel_Coverage coverage(1.0f, DISTANCE, V_FOV, SIZE, SIZE);
 	auto select = [&](uint32_t x, uint32_t y) { return coverage(x, y) == kind; };
 	for (int c = 0; c < 3; c++) {
-		Mean_Check check = compare_mean(film, c, expected[c], z_critical(),
+		Mean_Check check = compare_mean(film, c, expected[c], judge::z_critical(),
 		                                what + ", " + to_string(kind) + ", channel " + std::to_string(c), select);
 		INFO(check.message);
 		CHECK(check.pass);
@@ -94,10 +94,10 @@ void check_channels(const Furnace_Render& film, const Spectrum& expected, Pixel_
 }
 } // namespace
 
-TEST_CASE("a diffuse sphere under a constant Env_Map renders albedo * L", "[id:t7.render.env-map][estimate][task7][render][statistical][uses:Env_Map::sample][uses:Env_Map::pdf][uses:Env_Map::evaluate][uses:Uniform::sample]") {
+TEST_CASE("a diffuse sphere under a constant Env_Map renders albedo * L", "[id:t7.render.env-map][statistical:20][estimate][task7][render][uses:Env_Map::sample][uses:Env_Map::pdf][uses:Env_Map::evaluate][uses:Uniform::sample]") {
 	// The image is constant, so evaluate returns L in every direction, and with light sampling
 	// (task 6) the path tracer also draws directions with Env_Map::sample and weighs them with pdf.
-	Colours c = colours("render under Env_Map");
+	Colours c = colours();
 	Furnace_Render film = render_sphere(Env_Map(HDR_Image(16, 8, c.sky), true), c);
 	{
 		INFO("non-finite samples in the render: look for a division by a zero pdf or sin(theta) (handout §7.4)");
@@ -109,17 +109,17 @@ TEST_CASE("a diffuse sphere under a constant Env_Map renders albedo * L", "[id:t
 	               Pixel_Coverage::sphere,
 	               "diffuse sphere under a constant Env_Map, expected albedo * L: evaluate, sample and pdf must agree "
 	               "(handout §7.3, §7.4)");
-	check_noise(film, noise_alpha(), "diffuse sphere under a constant Env_Map",
+	check_noise(film, judge::significance(), "diffuse sphere under a constant Env_Map",
 	            "Weights L / pdf must stay bounded: sample, pdf and evaluate must describe the same density "
 	            "(handout §7.4)");
-	check_probe(sphere_under(Env_Map(probe_map("probe under Env_Map"), true), c), c.seed + 1,
+	check_probe(sphere_under(Env_Map(probe_map(), true), c), c.seed + 1,
 	            "The probe (the sphere under an Env_Map whose texels all differ: no closed form, so it is compared "
 	            "with the reference's render of the same scene)");
 }
 
-TEST_CASE("a diffuse sphere under Env_Constant renders albedo * L", "[id:t7.render.env-constant][estimate][task7][render][statistical][uses:Env_Map::sample][uses:Env_Map::pdf][uses:Env_Map::evaluate][uses:Uniform::sample]") {
+TEST_CASE("a diffuse sphere under Env_Constant renders albedo * L", "[id:t7.render.env-constant][statistical:17][estimate][task7][render][uses:Env_Map::sample][uses:Env_Map::pdf][uses:Env_Map::evaluate][uses:Uniform::sample]") {
 	// Env_Constant samples with Samplers::Sphere::Uniform (used when the path tracer samples lights).
-	Colours c = colours("render under Env_Constant");
+	Colours c = colours();
 	Furnace_Render film = render_sphere(Env_Constant{c.sky}, c);
 	{
 		INFO("non-finite samples in the render (handout §7.2)");
@@ -128,10 +128,9 @@ TEST_CASE("a diffuse sphere under Env_Constant renders albedo * L", "[id:t7.rend
 	check_channels(film, c.albedo * c.sky, Pixel_Coverage::sphere,
 	               "diffuse sphere under Env_Constant, expected albedo * L: Uniform::sample and pdf must agree "
 	               "(handout §7.2)");
-	check_noise(film, noise_alpha(), "diffuse sphere under Env_Constant",
+	check_noise(film, judge::significance(), "diffuse sphere under Env_Constant",
 	            "Uniform directions have the constant density 1 / (4 pi): sample and pdf must agree (handout §7.2)");
-	std::optional<RNG> secret;
-	if (judge::secret_seed()) secret = judge::case_generator("probe under Env_Constant");
+	std::optional<RNG> secret = judge::secret_inputs();
 	check_probe(with_probe_sphere(sphere_under(Env_Constant{c.sky}, c), secret ? &*secret : nullptr), c.seed + 1,
 	            "The probe (the sphere with a second one beside it under Env_Constant: no closed form, so it is "
 	            "compared with the reference's render of the same scene)");

@@ -13,12 +13,12 @@ constexpr float UNIFORM_PDF = float(1.0 / (4.0 * M_PI));
 // The poles, the axes and two directions between them; with a grading seed, six directions drawn
 // uniformly (the reference's uniform sampler).
 std::vector<Vec3> some_directions() {
-	if (!judge::secret_seed()) {
+	std::optional<RNG> secret = judge::secret_inputs();
+	if (!secret) {
 		return {{0, 1, 0}, {0, -1, 0}, {1, 0, 0}, {0, 0, -1}, {0.6f, 0.0f, 0.8f}, {0.48f, 0.6f, -0.64f}};
 	}
-	RNG rng = judge::case_generator("some directions");
 	std::vector<Vec3> dirs;
-	for (int n = 0; n < 6; n++) dirs.push_back(Samplers::Sphere::Uniform{}.sample(rng.unit2()));
+	for (int n = 0; n < 6; n++) dirs.push_back(Samplers::Sphere::Uniform{}.sample(secret->unit2()));
 	return dirs;
 }
 } // namespace
@@ -49,16 +49,17 @@ TEST_CASE("Uniform::sample returns unit directions, even for u at the ends of [0
 	}
 }
 
-TEST_CASE("Uniform::sample covers the sphere uniformly (chi-square)", "[id:t7.uniform.chi2][task7][uniform][statistical][fn:Uniform::sample]") {
+TEST_CASE("Uniform::sample covers the sphere uniformly (chi-square)", "[id:t7.uniform.chi2][statistical:1][task7][uniform][fn:Uniform::sample]") {
 	stats::Sphere_Chi2_Settings settings;
-	settings.seed = sampling_seed("uniform chi-square", 73);
+	settings.seed = sampling_seed(73);
 	protocol::Sampler_Answer answer =
 		student_uniform(unit_points(settings.seed, settings.samples), stats::sphere_chi2_pdf_directions(settings));
 	auto result = stats::sphere_chi2(answer.samples, answer.pdfs, settings);
+	const double alpha = judge::significance();
 	INFO("Uniform::sample must be distributed with the density Uniform::pdf (handout §7.2: y = 1 - 2 u uniform in "
 	     "[-1, 1], phi = 2 pi u uniform): "
-	     << result.summary() << "; significance " << chi2_alpha());
-	CHECK(result.pass(chi2_alpha()));
+	     << result.summary() << "; significance " << alpha);
+	CHECK(result.pass(alpha));
 }
 
 TEST_CASE("Env_Constant samples uniformly: its pdf is 1 / (4 pi)", "[id:t7.env-constant.uniform][task7][uniform][uses:Uniform::sample][uses:Uniform::pdf]") {
@@ -73,7 +74,7 @@ TEST_CASE("Env_Constant samples uniformly: its pdf is 1 / (4 pi)", "[id:t7.env-c
 
 TEST_CASE("Env_Map without importance sampling samples the sphere uniformly", "[id:t7.env-map.uniform][task7][uniform][fn:Env_Map::sample][uses:Uniform::sample][uses:Uniform::pdf]") {
 	std::vector<Vec3> dirs = some_directions();
-	std::vector<Vec2> us = unit_points(sampling_seed("Env_Map uniform", 74), 100);
+	std::vector<Vec2> us = unit_points(sampling_seed(74), 100);
 	protocol::Env_Map_Queries::Answer env = student_env_map(gradient_map(), false, us, dirs);
 	for (size_t n = 0; n < dirs.size(); n++) {
 		INFO("Env_Map::pdf" << str(dirs[n]) << " = " << env.queries.pdfs[n]
@@ -92,7 +93,7 @@ TEST_CASE("Env_Map without importance sampling samples the sphere uniformly", "[
 TEST_CASE("Env_Map with importance sampling uses its Image sampler", "[id:t7.env-map.importance][task7][uniform][fn:Env_Map::sample][fn:Env_Map::pdf][uses:Image::sample][uses:Image::pdf]") {
 	// The pdfs are compared at directions spread like importance samples (the reference's).
 	HDR_Image image = gradient_map();
-	std::vector<Vec2> us = unit_points(sampling_seed("Env_Map importance", 75), 100);
+	std::vector<Vec2> us = unit_points(sampling_seed(75), 100);
 	std::vector<Vec3> dirs;
 	Samplers::Sphere::Image reference(image);
 	for (Vec2 u : us) dirs.push_back(reference.sample(u));

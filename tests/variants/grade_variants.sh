@@ -30,7 +30,7 @@ scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 # Under a grading seed the judges vary each graded scene and render its reference (a minute or so,
 # tests/support/graded_variation.h): here LAB_SCENE_VARIATIONS (default 4) varied scenes serve every
-# seed (grading/judge/judge.h, scene_generator), their references kept in the build's reference cache,
+# seed (grading/judge/judge.h, Secret::graded_scene), their references kept in the build's reference cache,
 # where grade-submission keeps them too (LAB_REFERENCE_CACHE).
 export LAB_SCENE_VARIATIONS=${LAB_SCENE_VARIATIONS:-4}
 export LAB_REFERENCE_CACHE=${LAB_REFERENCE_CACHE:-$(dirname "$(dirname "$judge")")/grading/reference-cache}
