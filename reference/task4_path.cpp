@@ -40,10 +40,6 @@ float BSDF_Lambertian::pdf(Vec3 out_dir, Vec3 in_dir) const {
 // ---- The estimator (handout §4.2, §4.3) ----------------------------------------------------------
 
 namespace {
-// Russian roulette starts once a path has bounced this often: the first bounces carry most of the
-// image and are never cut.
-constexpr uint32_t ROULETTE_DEPTH = 3;
-
 float max_component(Spectrum s) {
 	return std::max({s.r, s.g, s.b});
 }

@@ -43,8 +43,9 @@ Spectrum Pathtracer::shade(RNG& rng, const Ray& ray, const Trace& hit) const {
 	//    is discrete. A pdf of 0 means the direction adds nothing: never divide by it.
 	// 5. Trace the new ray with trace(): spawn_ray(hit, direction, ray.depth + 1) (spawn_ray.h)
 	//    starts it just off the surface, so that it cannot hit the surface it leaves.
-	// 6. Optionally, Russian roulette (handout §4.3), only if settings.russian_roulette: stop with
-	//    some probability and divide by the probability of continuing, so the average stays the same.
+	// 6. Optionally, Russian roulette (handout §4.3), only if settings.russian_roulette: from
+	//    ROULETTE_DEPTH on (a constant of Pathtracer), stop with some probability and divide by the probability
+	//    of continuing, so the average stays the same.
 	//
 	// Until then this shows the Part I picture: surfaces lit from the eye.
 	(void)rng;

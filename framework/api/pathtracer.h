@@ -8,6 +8,7 @@
 #include "scene.h"
 #include "spawn_ray.h"
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -73,6 +74,10 @@ public:
 	// Task 4 (student/task4_path.cpp): the radiance leaving hit.position towards ray.point:
 	// emission plus a one-sample estimate of reflected light, continuing the path with trace().
 	Spectrum shade(RNG& rng, const Ray& ray, const Trace& hit) const;
+	// Russian roulette (handout §4.3) may end a path from this depth on: the first bounces carry
+	// most of the image and are never cut. Task 4's reference and the framework's integrators
+	// start there.
+	static constexpr uint32_t ROULETTE_DEPTH = 3;
 
 	// Task 6 (student/task6_direct_lighting.cpp): the direction to continue a path from `hit`
 	// (out_dir: unit, world space, towards the previous vertex), by BSDF sampling or, for

@@ -20,7 +20,7 @@
 // header, an encoded Trace as payload) before the subject goes on. So the judge counts the objects a
 // traversal tests itself, and a subject cannot find a hit without asking. Numbers are little-endian, floats are IEEE
 // binary32 bit patterns, a vector is a u64 count and its elements, a string a u64 length and bytes.
-// The encoding of each type is in wire.h. Each request's `fits` says whether an answer has the shape
+// The headers and the encoding of each type are in wire.h, which both sides use. Each request's `fits` says whether an answer has the shape
 // its inputs call for (one result per query): one that does not is malformed.
 //
 // Requests are batched: one request per student function (or per render) with every input of a

@@ -209,13 +209,9 @@ std::string Subject::exchange(Kind kind, const std::string& payload, const Quest
 	uint32_t number = ++sequence;
 	// A request, or a reply to a question: the request's header and the payload.
 	auto message_of = [&](const std::string& body) {
-		std::string message;
-		auto append = [&](const auto& value) { message.append(reinterpret_cast<const char*>(&value), sizeof value); };
-		append(protocol::MAGIC);
-		append(uint32_t(kind));
-		append(number);
-		append(uint64_t(body.size()));
-		return message + body;
+		wire::Request_Header header;
+		header.kind = uint32_t(kind), header.sequence = number;
+		return wire::message(header, body);
 	};
 	std::string message = message_of(payload);
 	if (!save_requests.empty()) std::ofstream(save_requests, std::ios::binary | std::ios::app) << message;
@@ -254,22 +250,18 @@ std::string Subject::exchange(Kind kind, const std::string& payload, const Quest
 	uint32_t status;
 	uint64_t length;
 	for (;;) {
-		char header[4 * 4 + 8];
-		receive(header, sizeof header);
-		uint32_t magic, answer_kind, answer_sequence;
-		std::memcpy(&magic, header, 4);
-		std::memcpy(&answer_kind, header + 4, 4);
-		std::memcpy(&answer_sequence, header + 8, 4);
-		std::memcpy(&status, header + 12, 4);
-		std::memcpy(&length, header + 16, 8);
-		if (magic != protocol::MAGIC || status > uint32_t(protocol::Status::QUESTION)) {
+		char header_bytes[wire::Answer_Header::BYTES];
+		receive(header_bytes, sizeof header_bytes);
+		wire::Answer_Header header = wire::answer_header(header_bytes);
+		status = header.status, length = header.length;
+		if (header.magic != protocol::MAGIC || status > uint32_t(protocol::Status::QUESTION)) {
 			fail(kind, "wrote something that is not an answer to its answer channel");
 		}
 		if (length > answer_limit(payload.size())) {
 			fail(kind, "sent an answer of " + std::to_string(length) + " bytes, more than any answer to this request (" +
 			               std::to_string(answer_limit(payload.size())) + " bytes): the subject's answer is too large");
 		}
-		if (answer_kind != uint32_t(kind) || answer_sequence != number) fail(kind, "answered out of turn");
+		if (header.kind != uint32_t(kind) || header.sequence != number) fail(kind, "answered out of turn");
 		if (protocol::Status(status) != protocol::Status::QUESTION) break;
 		// A question (protocol.h): answered before the subject goes on.
 		if (!questions) fail(kind, "asked the judge a question, which this request does not allow");

@@ -84,17 +84,13 @@ void write_all(int fd, const void* data, size_t size) {
 	}
 }
 
-struct Request_Header {
-	uint32_t magic, kind, sequence;
-	uint64_t length;
-};
+using wire::Request_Header;
 
 // Reads one request; false at the end of the input.
 bool read_request(int fd, Request_Header& header, std::string& payload) {
-	if (!read_all(fd, &header.magic, 4) || !read_all(fd, &header.kind, 4) || !read_all(fd, &header.sequence, 4) ||
-	    !read_all(fd, &header.length, 8)) {
-		return false;
-	}
+	char header_bytes[Request_Header::BYTES];
+	if (!read_all(fd, header_bytes, sizeof header_bytes)) return false;
+	header = wire::request_header(header_bytes);
 	if (header.magic != MAGIC || header.length > MAX_PAYLOAD) {
 		std::fprintf(stderr, "subject: not a judge's request\n");
 		_exit(2);
@@ -108,14 +104,9 @@ Request_Header current_request;
 bool replaying = false;
 
 void write_answer(const Request_Header& request, Status status, const std::string& payload) {
-	std::string message;
-	auto append = [&](const auto& value) { message.append(reinterpret_cast<const char*>(&value), sizeof value); };
-	append(MAGIC);
-	append(request.kind);
-	append(request.sequence);
-	append(uint32_t(status));
-	append(uint64_t(payload.size()));
-	message += payload;
+	wire::Answer_Header header;
+	header.kind = request.kind, header.sequence = request.sequence, header.status = uint32_t(status);
+	std::string message = wire::message(header, payload);
 	write_all(ANSWER_FD, message.data(), message.size());
 }
 

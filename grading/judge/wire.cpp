@@ -14,6 +14,48 @@ void keep_large_buffers() {
 
 namespace {
 
+template<class T> void append(std::string& bytes, T value) {
+	bytes.append(reinterpret_cast<const char*>(&value), sizeof value);
+}
+template<class T> T take(const char*& bytes) {
+	T value;
+	std::memcpy(&value, bytes, sizeof value);
+	bytes += sizeof value;
+	return value;
+}
+
+} // namespace
+
+std::string message(Request_Header header, const std::string& payload) {
+	std::string bytes;
+	append(bytes, header.magic), append(bytes, header.kind), append(bytes, header.sequence);
+	append(bytes, uint64_t(payload.size()));
+	return bytes + payload;
+}
+
+std::string message(Answer_Header header, const std::string& payload) {
+	std::string bytes;
+	append(bytes, header.magic), append(bytes, header.kind), append(bytes, header.sequence), append(bytes, header.status);
+	append(bytes, uint64_t(payload.size()));
+	return bytes + payload;
+}
+
+Request_Header request_header(const char* bytes) {
+	Request_Header header;
+	header.magic = take<uint32_t>(bytes), header.kind = take<uint32_t>(bytes), header.sequence = take<uint32_t>(bytes);
+	header.length = take<uint64_t>(bytes);
+	return header;
+}
+
+Answer_Header answer_header(const char* bytes) {
+	Answer_Header header;
+	header.magic = take<uint32_t>(bytes), header.kind = take<uint32_t>(bytes), header.sequence = take<uint32_t>(bytes);
+	header.status = take<uint32_t>(bytes), header.length = take<uint64_t>(bytes);
+	return header;
+}
+
+namespace {
+
 enum class Shape_Tag : uint32_t { sphere = 0, mesh = 1 };
 enum class Environment_Tag : uint32_t { none = 0, constant = 1, map = 2 };
 

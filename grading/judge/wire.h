@@ -218,6 +218,25 @@ template<class T> T decode(const std::string& bytes) {
 	return value;
 }
 
+// The messages' headers (protocol.h, "Transport"), for both sides: the judge writes requests and
+// reads answers (subject.cpp), the subject reads requests and writes answers (subject_main.cpp).
+struct Request_Header {
+	uint32_t magic = protocol::MAGIC, kind = 0, sequence = 0;
+	uint64_t length = 0; // of the payload that follows
+	static constexpr size_t BYTES = 3 * 4 + 8;
+};
+struct Answer_Header {
+	uint32_t magic = protocol::MAGIC, kind = 0, sequence = 0, status = 0;
+	uint64_t length = 0;
+	static constexpr size_t BYTES = 4 * 4 + 8;
+};
+// A message: its header with the payload's length, then the payload.
+std::string message(Request_Header header, const std::string& payload);
+std::string message(Answer_Header header, const std::string& payload);
+// The header in the first BYTES bytes at `bytes` (checked by the caller: magic, status, length).
+Request_Header request_header(const char* bytes);
+Answer_Header answer_header(const char* bytes);
+
 // For the judge and the subject, first thing in main: requests and answers of millions of samples
 // are encoded, decoded and freed one after another, and the C library would map each large buffer
 // afresh and unmap it when freed (a page fault per 4 KiB every time); this keeps them in the heap.

@@ -175,8 +175,7 @@ quoted handouts/task4_path.md 'the framework uses k = @' framework/api/spawn_ray
 quoted handouts/task4_path.md '^their own floor again, with k = 4, 83\); @ keeps' framework/api/spawn_ray.h 'RAY_EPSILON = @ \* 0x'
 quoted handouts/task4_path.md 'the offset of §4.2 \(k = @\) only' framework/api/spawn_ray.h 'RAY_EPSILON = @ \* 0x'
 quoted handouts/task4_path.md '\) · k · @$' framework/api/spawn_ray.h 'RAY_EPSILON = [0-9.]+f \* @;'
-quoted handouts/task4_path.md '`ray.depth >= @`' reference/task4_path.cpp 'ROULETTE_DEPTH = @;'
-quoted handouts/task4_path.md '`ray.depth >= @`' framework/render/integrators/nee_integrator.cpp 'ROULETTE_DEPTH = @;'
+quoted handouts/task4_path.md 'which `pathtracer.h` sets to @ in' framework/api/pathtracer.h 'ROULETTE_DEPTH = @;'
 quoted handouts/task4_path.md 'share a @ chance of failing' grading/judge/judge.h 'GRADER_ALPHA = @;'
 quoted_budget handouts/task4_path.md 'grader.s @ statistical checks' tests/task4
 quoted_budget handouts/task4_path.md '0\.99\^\(1/@\)' tests/task4

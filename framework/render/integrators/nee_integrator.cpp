@@ -52,8 +52,7 @@ Spectrum shade_nee(const Pathtracer& pt, RNG& rng, const Ray& ray, const Trace& 
 	if (weight == Spectrum{0.0f}) return radiance;
 	// Russian roulette as task 4 plays it (reference/task4_path.cpp: q = min(1, max(largest albedo
 	// component, largest weight component)), from its depth on.
-	constexpr uint32_t ROULETTE_DEPTH = 3;
-	if (pt.settings.russian_roulette && ray.depth >= ROULETTE_DEPTH) {
+	if (pt.settings.russian_roulette && ray.depth >= Pathtracer::ROULETTE_DEPTH) {
 		float q = std::min(1.0f, std::max(max_component(bsdf.albedo()), max_component(weight)));
 		if (q < 1.0f) {
 			if (!rng.coin_flip(q)) return radiance;
