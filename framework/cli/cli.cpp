@@ -44,8 +44,9 @@ std::vector<std::string> write_outputs(const Film& film, const Render_Settings& 
 		writer(path);
 		written.push_back(path);
 	};
-	write(options.png, [&](const std::string& path) { write_png(path, film.mean(), options.exposure); });
-	write(options.exr, [&](const std::string& path) { write_exr(path, film.mean()); });
+	HDR_Image shown = options.samples_view ? sample_rate_map(film, settings.samples) : film.mean();
+	write(options.png, [&](const std::string& path) { write_png(path, shown, options.exposure); });
+	write(options.exr, [&](const std::string& path) { write_exr(path, shown); });
 	write(options.variance, [&](const std::string& path) { write_exr(path, film.variance()); });
 	write(options.nan_map, [&](const std::string& path) { write_png(path, film.non_finite_map()); });
 	write(options.film, [&](const std::string& path) {
@@ -93,14 +94,23 @@ void report(const Film& film, const Pathtracer& pathtracer, const Cli_Options& o
 	double samples = double(settings.width) * settings.height * share;
 	char time[32];
 	std::snprintf(time, sizeof time, "%.3f s", seconds);
-	out << "rendered " << settings.width << " x " << settings.height << " pixels, " << share
-	    << (share == 1 ? " sample" : " samples") << " each";
+	out << "rendered " << settings.width << " x " << settings.height << " pixels, "
+	    << (options.adaptive > 0.0f ? "up to " : "") << share << (share == 1 ? " sample" : " samples") << " each";
 	if (options.passes > 1)
 		out << " (pass " << options.pass << " of " << options.passes << " of " << settings.samples << " samples)";
-	out << ", view " << view_name(view);
+	out << ", view " << (options.samples_view ? "samples" : view_name(view));
 	if (view == View::path)
 		out << ", integrator " << estimator.integrator << ", sampler " << sampler_name(estimator.sampler);
 	out << ", in " << time << "\n";
+	if (options.adaptive > 0.0f) {
+		uint64_t taken = 0;
+		for (const Pixel_Stats& pixel : film.pixels) taken += pixel.count + pixel.non_finite;
+		char mean[32];
+		std::snprintf(mean, sizeof mean, "%.1f", double(taken) / double(film.pixels.size()));
+		out << "adaptive sampling (threshold " << options.adaptive << "): " << mean
+		    << " samples per pixel on average (see them with --view samples)\n";
+		samples = double(taken);
+	}
 	out << "total: " << seconds_text(times.loading + times.rendering) << " (loading " << seconds_text(times.loading)
 	    << ", rendering " << seconds_text(times.rendering) << ")\n";
 	out << "speed: " << with_unit(samples / std::max(seconds, 1e-9)) << " samples/s (rendering)\n";
@@ -117,6 +127,7 @@ void render_and_write(const Scene& scene, const Cli_Options& options, Run_Times 
 	render_options.threads = options.threads;
 	render_options.pass = options.pass;
 	render_options.passes = options.passes;
+	render_options.adaptive.threshold = options.adaptive;
 	render_options.progress = [&](size_t done, size_t total) { progress_bar.update(done, total); };
 
 	auto start = std::chrono::steady_clock::now();

@@ -43,6 +43,14 @@ float stops(const std::string& option, const std::string& text) {
 	return value;
 }
 
+float adaptive_threshold(const std::string& option, const std::string& text) {
+	float value = 0.0f;
+	if (!parse_decimal(text, value) || !(value >= 0.001f && value <= 1.0f)) {
+		throw Input_Error(option + ": expected a relative precision from 0.001 to 1 (e.g. 0.05), got '" + text + "'");
+	}
+	return value;
+}
+
 std::string lowercase(std::string text) {
 	std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
 	return text;
@@ -101,7 +109,8 @@ bool follow_format_json(const std::string& option, const std::string& name) {
 View view_named(const std::string& option, const std::string& name) {
 	View view;
 	if (!parse_view(name, view)) {
-		throw Input_Error(option + ": unknown view '" + name + "' (expected path, eye, normals, albedo, bvh or direction)");
+		throw Input_Error(option + ": unknown view '" + name +
+		                  "' (expected path, samples, eye, normals, albedo, bvh or direction)");
 	}
 	return view;
 }
@@ -149,7 +158,15 @@ const std::vector<Option>& option_table() {
 		{"--threads", "T", "render threads, 0 to 1024 (0 = all cores; the image does not depend on it)",
 		 [](auto& o, auto& name, auto& v) { o.threads = whole_number<uint32_t>(name, v, 0, 1024); }},
 		{"--view", "VIEW", "what to show (see views below; default path)",
-		 [](auto& o, auto& name, auto& v) { o.view = view_named(name, v); }},
+		 [](auto& o, auto& name, auto& v) {
+			 o.samples_view = v == "samples";
+			 o.view = o.samples_view ? View::path : view_named(name, v);
+		 }},
+		{"--adaptive", "THRESHOLD",
+		 "adaptive sampling: each pixel stops once the 95 % confidence interval of its mean is within THRESHOLD "
+		 "of it (relative, 0.001 to 1, e.g. 0.05), checked every 16 samples from 32 on; --spp is then the most "
+		 "a pixel takes (see --view samples)",
+		 [](auto& o, auto& name, auto& v) { o.adaptive = adaptive_threshold(name, v); }},
 		{"--exposure", "STOPS", "brighten (> 0) or darken (< 0) the PNG by 2^STOPS (default 0)",
 		 [](auto& o, auto& name, auto& v) { o.exposure = stops(name, v); }},
 		{"--follow-pixel", "X,Y",
@@ -267,6 +284,8 @@ std::string usage(const std::string& program) {
 	}
 	text += "\nviews (--view):\n"
 	        "  path       the Monte Carlo path tracer (tasks 4 to 7)\n"
+	        "  samples    the path tracer's render, shown as the samples each pixel took\n"
+	        "             (with --adaptive) as a heat map: black none, white --spp\n"
 	        "  eye        light from the eye: albedo * |cos| at the first hit, plus emission\n"
 	        "  normals    the first hit's normal n as colour (n + 1) / 2\n"
 	        "  albedo     the first hit's albedo (the BSDF's reflectance)\n"
@@ -343,6 +362,10 @@ Cli_Options parse_cli_options(const std::vector<std::string>& args) {
 	if (options.png.empty()) options.png = default_png(program_name(args), options.scene);
 	if (options.stream && (options.passes > 1 || options.follow_pixel)) {
 		throw Input_Error("--stream renders the whole film progressively: it goes with neither --pass nor --follow-pixel");
+	}
+	if (options.adaptive > 0.0f && (options.passes > 1 || options.stream || options.follow_pixel)) {
+		throw Input_Error("--adaptive decides each pixel's samples over the whole render: it goes with neither "
+		                  "--pass, --stream nor --follow-pixel");
 	}
 	if (options.passes > 1 && options.film.empty()) {
 		throw Input_Error("--pass " + std::to_string(options.pass) + "/" + std::to_string(options.passes) +

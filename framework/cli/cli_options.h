@@ -20,6 +20,8 @@ struct Cli_Options {
 	std::optional<uint64_t> seed;
 	uint32_t threads = 0; // 0 = all hardware threads
 	View view = View::path;
+	bool samples_view = false; // --view samples: the path tracer's render, shown as its sample counts
+	float adaptive = 0.0f;     // --adaptive: the threshold of adaptive sampling (adaptive_sampling.h); 0: off
 	float exposure = 0.0f; // stops, for the PNG
 	bool quiet = false;
 	// Strategy switches, each the same image with other noise: --no-light-sampling, --no-roulette,

@@ -2,6 +2,7 @@
 #include "bvh_visits.h"
 #include "estimator.h"
 #include "frame.h"
+#include "heat_ramp.h"
 #include "path_integrator.h"
 #include "render_observer.h"
 
@@ -17,16 +18,6 @@ constexpr std::array<std::pair<View, const char*>, 6> VIEW_NAMES{{
 	{View::bvh, "bvh"},
 	{View::direction, "direction"},
 }};
-
-// A perceptually ordered heat ramp (black, blue, magenta, orange, yellow, white) for t in [0, 1].
-Spectrum heat(float t) {
-	constexpr std::array<Spectrum, 6> stops{Spectrum{0.0f, 0.0f, 0.0f}, Spectrum{0.1f, 0.1f, 0.6f},
-	                                        Spectrum{0.7f, 0.1f, 0.6f}, Spectrum{1.0f, 0.4f, 0.1f},
-	                                        Spectrum{1.0f, 0.9f, 0.2f}, Spectrum{1.0f, 1.0f, 1.0f}};
-	t = glm::clamp(t, 0.0f, 1.0f) * float(stops.size() - 1);
-	size_t i = std::min(size_t(t), stops.size() - 2);
-	return glm::mix(stops[i], stops[i + 1], t - float(i));
-}
 } // namespace
 
 bool parse_view(const std::string& name, View& view) {
@@ -81,7 +72,7 @@ Spectrum Pathtracer::debug_view(const Ray& ray) const {
 	case View::bvh: {
 		// 64 or more overlapped nodes saturate the ramp.
 		float nodes = float(count_overlapped_nodes(scene.bvh, ray, hit.hit ? hit.distance : INF_F));
-		return heat(nodes / 64.0f);
+		return heat_ramp(nodes / 64.0f);
 	}
 	default: return Spectrum{0.0f};
 	}

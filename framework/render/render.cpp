@@ -33,13 +33,19 @@ uint32_t first_of_pass(uint32_t first, const Render_Options& options) {
 void render_tile(const Pathtracer& pt, const Render_Settings& settings, const Render_Options& options, const Tile& tile,
                  uint32_t first, uint32_t end, Film& film) {
 	Sampler sampler = pt.estimator().choice.sampler;
+	const Adaptive_Sampling& adaptive = options.adaptive;
 	for (uint32_t y = tile.y0; y < tile.y1; y++) {
 		for (uint32_t x = tile.x0; x < tile.x1; x++) {
 			size_t index = size_t(y) * film.w + x;
 			Pixel_Stats& pixel = film.pixels[index];
+			Luminance_Sums sums;
 			for (uint32_t s = first_of_pass(first, options); s < end; s += options.passes) {
 				RNG rng = generator_for_sample(settings.seed, index, s, sampler);
-				pixel.add(pt.trace_pixel(x, y, rng));
+				Spectrum sample = pt.trace_pixel(x, y, rng);
+				pixel.add(sample);
+				if (adaptive.threshold <= 0.0f) continue;
+				sums.add(sample);
+				if ((s + 1) % adaptive.batch == 0 && pixel_converged(sums, adaptive)) break;
 			}
 		}
 	}
@@ -65,6 +71,10 @@ void render_samples(const Pathtracer& pathtracer, Film& film, uint32_t first, ui
 	if (options.passes == 0 || options.pass < 1 || options.pass > options.passes) {
 		throw std::invalid_argument("render: pass " + std::to_string(options.pass) + " of " +
 		                            std::to_string(options.passes) + " (expected 1 <= pass <= passes)");
+	}
+	if (options.adaptive.threshold > 0.0f && (first != 0 || options.passes != 1 || options.adaptive.batch == 0)) {
+		throw std::invalid_argument("render: adaptive sampling renders every sample of a film at once, in batches of "
+		                            "at least one (not in passes, nor progressively)");
 	}
 	const Render_Settings& settings = pathtracer.settings;
 	if (film.w != settings.width || film.h != settings.height) {

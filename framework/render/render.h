@@ -2,6 +2,7 @@
 // Rendering: square tiles of pixels rendered in parallel on a thread pool. Every sample of a pixel
 // is drawn in the same tile, in order, with its own generator (generator_for_sample, sampler.h), so
 // the result is bit-identical for any number of threads and any tile order.
+#include "adaptive_sampling.h"
 #include "film.h"
 #include "pathtracer.h"
 
@@ -18,6 +19,10 @@ struct Render_Options {
 	// draws the samples with index s % N == P - 1 of the settings' samples. The N passes draw every
 	// sample of the whole render exactly once, each with the generator it has there.
 	uint32_t pass = 1, passes = 1;
+	// With a threshold, each pixel stops once its estimate is that precise (adaptive_sampling.h):
+	// the settings' samples are then the most a pixel takes. A render of every sample at once only
+	// (render(); not with passes, nor progressively).
+	Adaptive_Sampling adaptive;
 };
 
 // Renders pathtracer.settings.samples samples of every pixel (of them, options' pass's share).

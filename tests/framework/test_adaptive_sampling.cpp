@@ -1,0 +1,157 @@
+// Adaptive sampling (framework/render/adaptive_sampling.h): the stopping rule on closed forms, a
+// pixel of constant samples stopping at the minimum, renders identical for any threads and tile
+// order, each pixel the uniform render's first samples of it, and the renderer's --adaptive and
+// --view samples.
+#include "adaptive_sampling.h"
+#include "cli.h"
+#include "estimator.h"
+#include "render.h"
+#include "temp_dir.h"
+
+#include "lab_catch2.h"
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace {
+
+// n samples of grey value 1 and 3 in turn: mean 2 and, for even n, s^2 = n / (n - 1) (each sample
+// is 1 from the mean), so the half-width 1.96 s / sqrt(n) is 1.96 / sqrt(n - 1).
+Luminance_Sums alternating(uint32_t n) {
+	Luminance_Sums sums;
+	for (uint32_t i = 0; i < n; i++) sums.add(Spectrum(i % 2 ? 3.0f : 1.0f));
+	return sums;
+}
+
+// A diffuse sphere in front of a sky, lit only by it: the silhouette and the shadowed side are
+// noisy, the sky constant.
+Scene lit_sphere(Spectrum albedo) {
+	Scene scene;
+	scene.camera = Camera::look_at(Vec3{0.0f, 0.0f, 3.0f}, Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f}, 50.0f, 1.0f);
+	scene.settings.width = 20;
+	scene.settings.height = 20;
+	scene.settings.samples = 256;
+	scene.settings.max_depth = 3;
+	scene.settings.seed = 11;
+	scene.materials.push_back(Material{BSDF(BSDF_Lambertian{albedo}), Spectrum{0.0f}});
+	scene.material_names.push_back("diffuse");
+	scene.objects.emplace_back(Sphere{1.0f}, Mat4{1.0f}, 0, 0);
+	scene.environment = Env_Constant{Spectrum{1.0f}};
+	scene.commit();
+	return scene;
+}
+
+Film render_adaptively(const Scene& scene, float threshold, uint32_t threads, bool shuffle = false) {
+	Render_Options options;
+	options.threads = threads;
+	options.tile_size = 4;
+	options.shuffle_tiles = shuffle;
+	options.adaptive.threshold = threshold;
+	return render(Pathtracer(scene, scene.settings), options);
+}
+
+bool same_bits(const Pixel_Stats& a, const Pixel_Stats& b) {
+	return a.count == b.count && a.non_finite == b.non_finite && std::memcmp(&a.mean, &b.mean, sizeof a.mean) == 0 &&
+	       std::memcmp(&a.m2, &b.m2, sizeof a.m2) == 0;
+}
+
+} // namespace
+
+TEST_CASE("adaptive sampling: a pixel stops once 1.96 s / sqrt(n) <= threshold * mean, never before the minimum") {
+	Adaptive_Sampling rule;
+	rule.threshold = 0.1f; // half-width 1.96 / sqrt(n - 1) <= 0.2 from n - 1 >= 96.04 on
+	CHECK_FALSE(pixel_converged(alternating(96), rule)); // 1.96 / sqrt(95) = 0.2011
+	CHECK(pixel_converged(alternating(98), rule));       // 1.96 / sqrt(97) = 0.1990
+	rule.threshold = 0.5f; // 1.96 / sqrt(n - 1) <= 1 from n = 5 on, but not before min_samples
+	CHECK_FALSE(pixel_converged(alternating(rule.min_samples - 2), rule));
+	CHECK(pixel_converged(alternating(rule.min_samples), rule));
+}
+
+TEST_CASE("adaptive sampling: constant samples, black ones too, stop at the minimum; non-finite ones do not count") {
+	Adaptive_Sampling rule;
+	rule.threshold = 0.01f;
+	for (float value : {0.0f, 0.25f, 7.0f}) {
+		Luminance_Sums sums;
+		for (uint32_t i = 0; i + 1 < rule.min_samples; i++) sums.add(Spectrum(value));
+		sums.add(Spectrum(std::nanf("")));
+		CAPTURE(value);
+		CHECK_FALSE(pixel_converged(sums, rule));
+		sums.add(Spectrum(value));
+		CHECK(pixel_converged(sums, rule));
+	}
+}
+
+TEST_CASE("adaptive sampling: a white furnace's pixels (every sample 1) all stop at the minimum") {
+	// BSDF sampling alone: each sample's weight is albedo = 1, times the sky's 1.
+	Scene furnace = lit_sphere(Spectrum{1.0f});
+	furnace.settings.light_sampling = false;
+	Film film = render_adaptively(furnace, 0.01f, 2);
+	Adaptive_Sampling rule;
+	for (const Pixel_Stats& pixel : film.pixels) {
+		CHECK(pixel.count == rule.min_samples);
+		CHECK(pixel.mean_value().g == Approx(1.0f).epsilon(1e-5));
+	}
+}
+
+TEST_CASE("adaptive sampling: the same film for any threads and tile order, each pixel the uniform render's first samples") {
+	Scene scene = lit_sphere(Spectrum{0.5f});
+	Film one = render_adaptively(scene, 0.05f, 1);
+	Film shuffled = render_adaptively(scene, 0.05f, 2, true);
+	size_t early = 0, late = 0;
+	for (size_t i = 0; i < one.pixels.size(); i++) {
+		CHECK(same_bits(one.pixels[i], shuffled.pixels[i]));
+		early += one.pixels[i].count < scene.settings.samples;
+		late += one.pixels[i].count > Adaptive_Sampling{}.min_samples;
+	}
+	INFO("pixels that stopped early: " << early << ", that took more than the minimum: " << late);
+	CHECK(early > 0);
+	CHECK(late > 0);
+	// A pixel that took k samples is a uniform render's pixel of k samples, bit for bit.
+	for (size_t i : {size_t(0), one.pixels.size() / 2 + 10, one.pixels.size() - 1}) {
+		Render_Settings settings = scene.settings;
+		settings.samples = one.pixels[i].count;
+		Film uniform = render(Pathtracer(scene, settings), Render_Options{});
+		CAPTURE(i, settings.samples);
+		CHECK(same_bits(one.pixels[i], uniform.pixels[i]));
+	}
+}
+
+TEST_CASE("adaptive sampling: not in passes, nor progressively") {
+	Scene scene = lit_sphere(Spectrum{0.5f});
+	Pathtracer pathtracer(scene, scene.settings);
+	Render_Options options;
+	options.adaptive.threshold = 0.05f;
+	options.passes = 2;
+	CHECK_THROWS_AS(render(pathtracer, options), std::invalid_argument);
+	options.passes = 1;
+	Film film(scene.settings.width, scene.settings.height);
+	CHECK_THROWS_AS(render_samples(pathtracer, film, 8, 16, options), std::invalid_argument);
+}
+
+TEST_CASE("adaptive sampling: --adaptive says the mean samples a pixel took, --view samples draws them") {
+	Temp_Dir dir;
+	std::string scene = (dir.path() / "sphere.json").string(), png = (dir.path() / "samples.png").string();
+	std::ofstream(scene) << R"({
+		"camera": {"position": [0, 0, 3], "target": [0, 0, 0], "up": [0, 1, 0], "vertical_fov": 50},
+		"film": {"width": 12, "height": 12, "samples": 128, "max_depth": 3, "seed": 1},
+		"materials": {"grey": {"type": "lambertian", "albedo": [0.5, 0.5, 0.5]}},
+		"objects": [{"type": "sphere", "radius": 1, "material": "grey"}],
+		"environment": {"type": "constant", "radiance": [1, 1, 1]}
+	})";
+	std::ostringstream out, err;
+	int status = run_cli({"pathtracer_reference", scene, "--adaptive", "0.05", "--view", "samples", "--out", png}, out,
+	                     err, false);
+	INFO(out.str() << err.str());
+	REQUIRE(status == 0);
+	CHECK(out.str().find("up to 128 samples each, view samples") != std::string::npos);
+	CHECK(out.str().find("samples per pixel on average") != std::string::npos);
+	CHECK(std::filesystem::exists(png));
+	std::ostringstream out2, err2;
+	CHECK(run_cli({"pathtracer_reference", scene, "--adaptive", "2"}, out2, err2, false) == 2);
+	CHECK(err2.str().find("--adaptive: expected a relative precision from 0.001 to 1") != std::string::npos);
+	CHECK(run_cli({"pathtracer_reference", scene, "--adaptive", "0.1", "--pass", "1/2", "--film", png + ".exr"}, out2,
+	              err2, false) == 2);
+}
