@@ -18,13 +18,15 @@ Strategy_Setup set_up(const std::string& scene_path, const Strategy& strategy, u
 	return setup;
 }
 
-Timed_Render timed_render(const Strategy_Setup& setup, uint32_t spp, uint64_t seed, uint32_t threads) {
+Timed_Render timed_render(const Strategy_Setup& setup, uint32_t spp, uint64_t seed, uint32_t threads,
+                          float adaptive_threshold) {
 	Render_Settings settings = setup.settings;
 	settings.samples = spp;
 	settings.seed = seed;
 	Pathtracer pathtracer(*setup.scene, settings, View::path, setup.estimator);
 	Render_Options options;
 	options.threads = threads;
+	options.adaptive.threshold = adaptive_threshold;
 	Timed_Render result;
 	double cpu_start = process_cpu_seconds();
 	auto start = std::chrono::steady_clock::now();

@@ -25,12 +25,14 @@ Strategy_Setup set_up(const std::string& scene_path, const Strategy& strategy, u
 
 // One render of `spp` samples with `seed` on `threads` threads (0: all cores): the film, the wall
 // time of render() and the CPU time the process used meanwhile (threads x wall time on an idle
-// machine; less when other processes take the cores).
+// machine; less when other processes take the cores). With an adaptive threshold (render.h), spp
+// is the most a pixel takes.
 struct Timed_Render {
 	Film film{0, 0};
 	double seconds = 0.0, cpu_seconds = 0.0;
 };
-Timed_Render timed_render(const Strategy_Setup& setup, uint32_t spp, uint64_t seed, uint32_t threads);
+Timed_Render timed_render(const Strategy_Setup& setup, uint32_t spp, uint64_t seed, uint32_t threads,
+                          float adaptive_threshold = 0.0f);
 
 // The flags as one line of text.
 std::string joined(const std::vector<std::string>& words);

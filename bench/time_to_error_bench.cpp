@@ -39,7 +39,15 @@ const std::vector<Strategy> STRATEGIES{
 	{"+ nee", {"--integrator", "nee", "--sampler", "independent", "--light-choice", "uniform"}},
 	{"+ power", {"--integrator", "mixture", "--sampler", "independent", "--light-choice", "power"}},
 	{"all", {"--integrator", "nee", "--sampler", "sobol", "--light-choice", "power"}},
+	{"adaptive", {"--integrator", "nee", "--sampler", "sobol", "--light-choice", "power"}},
 };
+// Adaptive sampling (framework/render/adaptive_sampling.h) on top of all: where the other series
+// double the samples, its series halves the relative precision asked, threshold = ADAPTIVE_SCALE /
+// sqrt(spp) at the series' level spp (a pixel whose samples' relative deviation is r takes about
+// (1.96 r / threshold)^2 of them: spp / 4 where r = 1), with up to ADAPTIVE_MAX_FACTOR x spp each.
+const std::string ADAPTIVE = "adaptive";
+constexpr double ADAPTIVE_SCALE = 4.0;
+constexpr uint32_t ADAPTIVE_MAX_FACTOR = 4;
 // The reference: unbiased, and with independent samples, so that its per-pixel variance estimates
 // its own noise, which is subtracted from every render's relMSE (convergence_metrics.h).
 const Strategy REFERENCE{"reference", {"--integrator", "nee", "--sampler", "independent", "--light-choice", "power"}};
@@ -70,7 +78,9 @@ const Bench_Usage USAGE{"time_to_error_bench",
 	"                uniformly\n"
 	"  + sobol       low-discrepancy samples      + nee    next-event estimation with MIS\n"
 	"  + power       lights chosen by power\n"
-	"  all           all of them (the reference renderer's defaults)\n"};
+	"  all           all of them (the reference renderer's defaults)\n"
+	"  adaptive      all, with adaptive sampling (--adaptive): its series halves the threshold, 4 / sqrt(spp),\n"
+	"                up to 4 spp a pixel; the image mean's bias against the reference is printed beside all's\n"};
 
 uint32_t power_of_two(const std::string& option, const std::string& text) {
 	uint32_t value = USAGE.whole_number(option, text, 1);
@@ -119,7 +129,18 @@ struct Render_Result {
 	uint32_t spp;
 	uint64_t seed;
 	double seconds, cpu_seconds, rel_mse;
+	double bias; // (the image's mean luminance - the reference's) / the reference's
 };
+
+// The relative difference of the film's mean luminance over the image from the reference's.
+double image_bias(const Film& film, const Reference& reference) {
+	double ours = 0.0, theirs = 0.0;
+	for (size_t i = 0; i < film.pixels.size(); i++) {
+		ours += double(luminance(film.pixels[i].mean_value()));
+		theirs += double(luminance(reference.mean.pixels[i]));
+	}
+	return (ours - theirs) / theirs;
+}
 
 struct Curve {
 	std::vector<double> spp, seconds, cpu_seconds, rel_mse; // per level: medians of time, mean relMSE
@@ -241,9 +262,13 @@ int run(const Options& o) {
 	auto start = std::chrono::steady_clock::now();
 	for (const Job& job : jobs) {
 		for (size_t k = 0; k < chosen.size(); k++) {
-			Timed_Render render = timed_render(setups[k], job.spp, job.seed, THREADS);
+			bool adaptive = chosen[k].name == ADAPTIVE;
+			Timed_Render render =
+				adaptive ? timed_render(setups[k], ADAPTIVE_MAX_FACTOR * job.spp, job.seed, THREADS,
+				                        float(ADAPTIVE_SCALE / std::sqrt(double(job.spp))))
+				         : timed_render(setups[k], job.spp, job.seed, THREADS);
 			Render_Result r{job.spp, job.seed, render.seconds, render.cpu_seconds,
-			                render_error(render.film, reference).rel_mse};
+			                render_error(render.film, reference).rel_mse, image_bias(render.film, reference)};
 			results[k].push_back(r);
 			char line[512];
 			std::snprintf(line, sizeof line, "%s,%s,%u,%llu,%.6g,%.6g,%.6g,%.6g\n", chosen[k].name.c_str(),
@@ -280,6 +305,27 @@ int run(const Options& o) {
 	            " machine would take; efficiency 1 / (relMSE * seconds), median over the series; ratio: efficiency /\n"
 	            " the first strategy's; CPU %%: CPU time / (%u x wall time))\n",
 	            THREADS, THREADS);
+
+	// The bias of the image's mean, at each level: the mean over its renders, with its standard error.
+	std::printf("\nbias of the image's mean luminance against the reference, (ours - reference) / reference, mean "
+	            "+- standard error over the renders of each level (spp; adaptive: its threshold):\n");
+	for (size_t k = 0; k < chosen.size(); k++) {
+		if (chosen[k].name != ADAPTIVE && chosen[k].name != "all") continue;
+		std::printf("  %-9s", chosen[k].name.c_str());
+		for (double level : curves[k].spp) {
+			std::vector<double> biases;
+			for (const Render_Result& r : results[k])
+				if (r.spp == level) biases.push_back(r.bias);
+			double m = mean(biases), sum = 0.0;
+			for (double b : biases) sum += (b - m) * (b - m);
+			double error = biases.size() > 1 ? std::sqrt(sum / double(biases.size() - 1) / double(biases.size())) : 0.0;
+			if (chosen[k].name == ADAPTIVE)
+				std::printf("  %.3g: %+.2e +- %.1e", ADAPTIVE_SCALE / std::sqrt(level), m, error);
+			else
+				std::printf("  %g: %+.2e +- %.1e", level, m, error);
+		}
+		std::printf("\n");
+	}
 
 	int status = 0;
 	double lowest_share = 1.0;

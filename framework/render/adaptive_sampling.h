@@ -10,7 +10,7 @@
 // or at the render's samples, whichever comes first. A pixel whose luminance is constant (s = 0,
 // a black background included) stops at min_samples. Deciding on the samples themselves biases the
 // mean a little (a pixel whose first samples happen to agree stops early, and their mean is kept):
-// the minimum count bounds it (bench/README.md, "Adaptive sampling").
+// the minimum count bounds it.
 //
 // A pixel's samples are drawn in index order with the generators a uniform render gives them
 // (render.h), and its decision depends on its own samples alone: a render is bit-identical for any

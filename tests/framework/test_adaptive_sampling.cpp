@@ -13,8 +13,9 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace {
 
@@ -133,25 +134,23 @@ TEST_CASE("adaptive sampling: not in passes, nor progressively") {
 
 TEST_CASE("adaptive sampling: --adaptive says the mean samples a pixel took, --view samples draws them") {
 	Temp_Dir dir;
-	std::string scene = (dir.path() / "sphere.json").string(), png = (dir.path() / "samples.png").string();
-	std::ofstream(scene) << R"({
-		"camera": {"position": [0, 0, 3], "target": [0, 0, 0], "up": [0, 1, 0], "vertical_fov": 50},
-		"film": {"width": 12, "height": 12, "samples": 128, "max_depth": 3, "seed": 1},
-		"materials": {"grey": {"type": "lambertian", "albedo": [0.5, 0.5, 0.5]}},
-		"objects": [{"type": "sphere", "radius": 1, "material": "grey"}],
-		"environment": {"type": "constant", "radiance": [1, 1, 1]}
-	})";
+	const std::string scene = "scenes/cornell_box.json", png = (dir.path() / "samples.png").string();
+	const std::vector<std::string> small{"--width", "12", "--height", "12", "--spp", "128"};
+	auto run = [&](std::vector<std::string> args, std::ostringstream& out, std::ostringstream& err) {
+		args.insert(args.begin(), {"pathtracer_reference", scene});
+		args.insert(args.end(), small.begin(), small.end());
+		return run_cli(args, out, err, false);
+	};
 	std::ostringstream out, err;
-	int status = run_cli({"pathtracer_reference", scene, "--adaptive", "0.05", "--view", "samples", "--out", png}, out,
-	                     err, false);
+	int status = run({"--adaptive", "0.05", "--view", "samples", "--out", png}, out, err);
 	INFO(out.str() << err.str());
 	REQUIRE(status == 0);
 	CHECK(out.str().find("up to 128 samples each, view samples") != std::string::npos);
 	CHECK(out.str().find("samples per pixel on average") != std::string::npos);
 	CHECK(std::filesystem::exists(png));
 	std::ostringstream out2, err2;
-	CHECK(run_cli({"pathtracer_reference", scene, "--adaptive", "2"}, out2, err2, false) == 2);
+	CHECK(run({"--adaptive", "2"}, out2, err2) == 2);
 	CHECK(err2.str().find("--adaptive: expected a relative precision from 0.001 to 1") != std::string::npos);
-	CHECK(run_cli({"pathtracer_reference", scene, "--adaptive", "0.1", "--pass", "1/2", "--film", png + ".exr"}, out2,
-	              err2, false) == 2);
+	CHECK(run({"--adaptive", "0.1", "--pass", "1/2", "--film", png + ".exr"}, out2, err2) == 2);
+	CHECK(err2.str().find("--adaptive decides each pixel's samples over the whole render") != std::string::npos);
 }

@@ -166,7 +166,7 @@ quoted handouts/task3_bvh.md '`B = @` buckets' reference/task3_bvh.cpp 'constexp
 quoted handouts/task3_bvh.md 'binned-SAH tree \(@ buckets' reference/task3_bvh.cpp 'constexpr int BUCKETS = @;'
 quoted handouts/task3_bvh.md 'at most \*\*@ ×\*\* that of' tests/task3/bvh_quality_test.cpp 'MAX_SAH_RATIO = @;'
 quoted handouts/task3_bvh.md 'at most \*\*@ ×\*\* those of' tests/task3/bvh_quality_test.cpp 'MAX_TESTS_RATIO = @;'
-quoted handouts/task3_bvh.md 'white \(@ or more\)' framework/render/pathtracer.cpp 'heat\(nodes / @\)'
+quoted handouts/task3_bvh.md 'white \(@ or more\)' framework/render/pathtracer.cpp 'heat_ramp\(nodes / @\)'
 
 # Task 4: the ray offset (1 + max |p_i|) k 2^-24 of spawn_ray (every ray a path spawns), the depth
 # where roulette starts in the reference and the NEE integrator, the graders' float allowance and
