@@ -48,6 +48,9 @@ const std::vector<Strategy> STRATEGIES{
 const std::string ADAPTIVE = "adaptive";
 constexpr double ADAPTIVE_SCALE = 4.0;
 constexpr uint32_t ADAPTIVE_MAX_FACTOR = 4;
+float adaptive_threshold(double spp) {
+	return float(ADAPTIVE_SCALE / std::sqrt(spp));
+}
 // The reference: unbiased, and with independent samples, so that its per-pixel variance estimates
 // its own noise, which is subtracted from every render's relMSE (convergence_metrics.h).
 const Strategy REFERENCE{"reference", {"--integrator", "nee", "--sampler", "independent", "--light-choice", "power"}};
@@ -265,7 +268,7 @@ int run(const Options& o) {
 			bool adaptive = chosen[k].name == ADAPTIVE;
 			Timed_Render render =
 				adaptive ? timed_render(setups[k], ADAPTIVE_MAX_FACTOR * job.spp, job.seed, THREADS,
-				                        float(ADAPTIVE_SCALE / std::sqrt(double(job.spp))))
+				                        adaptive_threshold(job.spp))
 				         : timed_render(setups[k], job.spp, job.seed, THREADS);
 			Render_Result r{job.spp, job.seed, render.seconds, render.cpu_seconds,
 			                render_error(render.film, reference).rel_mse, image_bias(render.film, reference)};
@@ -320,7 +323,7 @@ int run(const Options& o) {
 			for (double b : biases) sum += (b - m) * (b - m);
 			double error = biases.size() > 1 ? std::sqrt(sum / double(biases.size() - 1) / double(biases.size())) : 0.0;
 			if (chosen[k].name == ADAPTIVE)
-				std::printf("  %.3g: %+.2e +- %.1e", ADAPTIVE_SCALE / std::sqrt(level), m, error);
+				std::printf("  %.3g: %+.2e +- %.1e", adaptive_threshold(level), m, error);
 			else
 				std::printf("  %g: %+.2e +- %.1e", level, m, error);
 		}

@@ -179,17 +179,27 @@ uint64_t seed_or_public(std::optional<RNG>& secret, uint64_t public_seed) {
 	return secret ? uint64_t(secret->integer()) << 32 | secret->integer() : public_seed;
 }
 
-double significance(size_t checks) {
+uint64_t secret_seed_or(uint64_t public_seed) {
+	std::optional<RNG> secret = secret_inputs();
+	return seed_or_public(secret, public_seed);
+}
+
+namespace {
+// One check's share of the grader's budget (Šidák), counting `checks` checks made.
+double one_check_level(size_t checks) {
 	Judge_State& s = state();
 	s.made_checks += checks;
-	double one = stats::sidak(GRADER_ALPHA, std::max<size_t>(s.budget, 1));
+	return stats::sidak(GRADER_ALPHA, std::max<size_t>(s.budget, 1));
+}
+} // namespace
+
+double significance(size_t checks) {
+	double one = one_check_level(checks);
 	return checks == 1 ? one : -std::expm1(double(checks) * std::log1p(-one));
 }
 
 double z_critical(size_t checks) {
-	double one = significance();
-	state().made_checks += checks - 1;
-	return stats::two_sided_z(one);
+	return stats::two_sided_z(one_check_level(checks));
 }
 
 const Sandbox& sandbox() {

@@ -37,6 +37,8 @@ bool inputs_are_secret();
 
 // `public_seed` in a public run, else a seed drawn from `secret` (for renders and generators).
 uint64_t seed_or_public(std::optional<RNG>& secret, uint64_t public_seed);
+// The same from the test case's next draw: seed_or_public(secret_inputs(), public_seed).
+uint64_t secret_seed_or(uint64_t public_seed);
 
 // Significance. Every statistical check of a grader shares one level: a correct submission fails
 // any of them with probability at most GRADER_ALPHA (Šidák over the grader's checks; each with its

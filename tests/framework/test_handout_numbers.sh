@@ -196,7 +196,7 @@ quoted handouts/task5_materials.md '\| @ samples at each of' tests/task5/test_mi
 # graders' significance and number of checks (task 6 and its NEE extension).
 quoted handouts/task6_direct_lighting.md '`SHADOW_RAY_END` = 1 − @\)' framework/api/pathtracer.h 'SHADOW_RAY_END = 1.0f - @;'
 quoted handouts/task6_direct_lighting.md 'returned direction to @ \(relative\)' tests/task6/test_sample_incoming.cpp 'abs\(s.pdf - expected\) <= @ \* expected'
-quoted handouts/task6_direct_lighting.md '\| @ samples on a tilted surface' tests/task6/test_sample_incoming.cpp 'samples_at\(scene, lit, @, sampling_seed\(1\)'
+quoted handouts/task6_direct_lighting.md '\| @ samples on a tilted surface' tests/task6/test_sample_incoming.cpp 'samples_at\(scene, lit, @, judge::secret_seed_or\(1\)'
 quoted handouts/task6_direct_lighting.md 'cut into @ batches' tests/support/sample_moments.h 'NOISE_BATCHES = @;'
 quoted_budget handouts/task6_direct_lighting.md '0\.99\^\(1/@\)' tests/task6
 quoted_budget handouts/task6_direct_lighting.md 'The @ statistical checks — a z-test' tests/task6_nee

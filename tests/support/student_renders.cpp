@@ -52,8 +52,7 @@ void check_renders_like_reference(const Image_Test& test) {
 	}
 	Scene scene = varied ? load_scene(*varied, graded_scene_file(graded.name)) : load_graded(graded);
 	Render_Settings settings = scene.settings;
-	std::optional<RNG> secret = judge::secret_inputs();
-	settings.seed = judge::seed_or_public(secret, settings.seed);
+	settings.seed = judge::secret_seed_or(settings.seed);
 	Film film = judge::ask(protocol::Render{scene, settings, Estimator_Choice{test.integrator}, graded.view, 2});
 	const double alpha = judge::significance(2); // the means' and the noise's checks (image_compare.h)
 	Reference_Check check = [&] {

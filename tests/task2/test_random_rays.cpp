@@ -82,8 +82,7 @@ Triangle random_triangle(RNG& rng, float scale) {
 TEST_CASE("Triangle::hit agrees with the exact answer on 10^5 random rays", "[id:t2.triangle.random-rays][fn:Triangle::hit]") {
 	// Origins within 10 sizes of the triangle, aimed at points around it (half of them inside),
 	// |dir| from 0.01 to 100, coordinates at scales from 1e-3 to 1e3.
-	std::optional<RNG> secret = judge::secret_inputs();
-	RNG rng(judge::seed_or_public(secret, 1234));
+	RNG rng(judge::secret_seed_or(1234));
 	std::vector<protocol::Triangle_Hits::Query> queries;
 	for (int i = 0; i < RAYS; i++) {
 		float scale = log_uniform(rng, -3.0f, 3.0f);
@@ -125,8 +124,7 @@ TEST_CASE("Triangle::hit agrees with the exact answer on 10^5 random rays", "[id
 TEST_CASE("Sphere::hit agrees with the exact answer on 10^5 random rays", "[id:t2.sphere.random-rays][fn:Sphere::hit]") {
 	// Radii from 0.01 to 100; origins from 0.2 r (inside) to 30 r away, aimed at points within
 	// 1.3 r of the centre (most hit, some pass by); |dir| from 0.01 to 100.
-	std::optional<RNG> secret = judge::secret_inputs();
-	RNG rng(judge::seed_or_public(secret, 5678));
+	RNG rng(judge::secret_seed_or(5678));
 	std::vector<protocol::Sphere_Hits::Query> queries;
 	for (int i = 0; i < RAYS; i++) {
 		Sphere sphere{log_uniform(rng, -2.0f, 2.0f)};
@@ -164,8 +162,7 @@ TEST_CASE("Triangle::hit and Sphere::hit never return NaN, whatever finite input
 	// accept tests positively so NaN fails them, handout §2.3.) One exception: a sphere of radius 0,
 	// or one so small against its distance (|o| / r > ~1e7) that the float hit point lands on its
 	// centre, has no normal; such hits are not checked for a NaN normal.
-	std::optional<RNG> secret = judge::secret_inputs();
-	RNG rng(judge::seed_or_public(secret, 31337));
+	RNG rng(judge::secret_seed_or(31337));
 	auto extreme = [&](float max_exponent = 30.0f) {
 		if (rng.integer(10) == 0) return 0.0f;
 		return (rng.coin_flip(0.5f) ? -1.0f : 1.0f) * log_uniform(rng, -max_exponent, max_exponent);

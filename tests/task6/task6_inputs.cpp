@@ -39,11 +39,6 @@ Lit_Point lit_point() {
 	}
 }
 
-uint64_t sampling_seed(uint64_t public_seed) {
-	std::optional<RNG> secret = judge::secret_inputs();
-	return judge::seed_or_public(secret, public_seed);
-}
-
 std::vector<Incoming_Sample> student_samples(const Scene& scene, const Trace& hit, const BSDF& bsdf, Vec3 out_dir,
                                              size_t n, uint64_t seed) {
 	protocol::Sample_Incoming request{scene, Render_Settings{}, {}, RNG_State::of(RNG(seed))};

@@ -4,7 +4,6 @@
 // --seed) each test case draws its own, within ranges where its closed forms still hold.
 #include "pathtracer.h"
 
-#include <string>
 #include <vector>
 
 namespace task6 {
@@ -25,9 +24,6 @@ Lit_Point lit_point();
 // A unit direction whose cosine with `axis` lies in [cos_min, cos_max], uniformly distributed over
 // that zone of the sphere.
 Vec3 direction_in_cone(RNG& rng, Vec3 axis, float cos_min, float cos_max = 1.0f);
-
-// The seed of a test case's random numbers: `public_seed`, or one drawn from the grading seed.
-uint64_t sampling_seed(uint64_t public_seed);
 
 // The student's Pathtracer(scene, {}).sample_incoming(rng, hit, bsdf, out_dir), n times from one
 // generator seeded with `seed`, in one request.

@@ -168,9 +168,9 @@ TEST_CASE("BSDF sampling, light sampling and the mixture all estimate the light 
 	double expected = RHO * e / M_PI;
 	Trace point = surface_point(lit.position, lit.normal);
 
-	uint64_t bsdf_seed = sampling_seed(11);
-	uint64_t lights_seed = sampling_seed(12);
-	uint64_t mixture_seed = sampling_seed(13);
+	uint64_t bsdf_seed = judge::secret_seed_or(11);
+	uint64_t lights_seed = judge::secret_seed_or(12);
+	uint64_t mixture_seed = judge::secret_seed_or(13);
 	check_own_estimate(moments(estimate(pt, Strategy::bsdf, point, lit.out_dir, 100000, bsdf_seed)), expected,
 	                   "BSDF sampling alone (the grader's own estimator: a failure here is a framework bug)");
 	check_own_estimate(moments(estimate(pt, Strategy::lights, point, lit.out_dir, 100000, lights_seed)), expected,
@@ -187,7 +187,7 @@ TEST_CASE("BSDF sampling, light sampling and the mixture all estimate the light 
 	                       Vec3{0.4f * lit.half_side, 0.0f, 0.0f},
 	            0.4f * lit.half_side);
 	probe.commit();
-	uint64_t probe_seed = sampling_seed(14);
+	uint64_t probe_seed = judge::secret_seed_or(14);
 	check_probe(estimate_mixture(probe, point, lit.out_dir, 100000, probe_seed),
 	            estimate(Pathtracer(probe, Render_Settings{}), Strategy::mixture, point, lit.out_dir, 100000,
 	                     reference_seed(probe_seed)),
@@ -210,7 +210,7 @@ TEST_CASE("the mixture estimates the light from a sphere: E = pi L (r/d)^2 cos(b
 	Vec3 normal{float(std::sin(beta)), float(std::cos(beta)), 0.0f};
 	double expected = RHO * closed_form::sphere_irradiance(radius, distance, std::cos(beta), 1.0) / M_PI;
 	Trace point = surface_point(Vec3{0.0f}, normal);
-	uint64_t seed = sampling_seed(21);
+	uint64_t seed = judge::secret_seed_or(21);
 	check_estimate(estimate_mixture(scene, point, normal, 100000, seed),
 	               estimate(Pathtracer(scene, Render_Settings{}), Strategy::mixture, point, normal, 100000,
 	                        reference_seed(seed)),
@@ -223,7 +223,7 @@ TEST_CASE("the mixture estimates the light from a sphere: E = pi L (r/d)^2 cos(b
 	add_object(probe, Sphere{float(0.25 * radius)}, add_material(probe, diffuse_material(Spectrum{0.0f}), "blocker"),
 	           glm::translate(Mat4{1.0f}, Vec3{float(0.15 * radius), float(0.5 * distance), 0.0f}));
 	probe.commit();
-	uint64_t probe_seed = sampling_seed(22);
+	uint64_t probe_seed = judge::secret_seed_or(22);
 	check_probe(estimate_mixture(probe, point, normal, 100000, probe_seed),
 	            estimate(Pathtracer(probe, Render_Settings{}), Strategy::mixture, point, normal, 100000,
 	                     reference_seed(probe_seed)),
@@ -238,9 +238,9 @@ TEST_CASE("under a small light, the mixture has a lower variance than BSDF sampl
 	Pathtracer pt(scene, Render_Settings{});
 	Trace point = surface_point(Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f});
 	Vec3 out_dir{0.0f, 1.0f, 0.0f};
-	Sample_Moments bsdf = moments(estimate(pt, Strategy::bsdf, point, out_dir, 100000, sampling_seed(31)));
+	Sample_Moments bsdf = moments(estimate(pt, Strategy::bsdf, point, out_dir, 100000, judge::secret_seed_or(31)));
 	Sample_Moments mixture =
-		moments(estimate_mixture(scene, point, out_dir, 100000, sampling_seed(32)));
+		moments(estimate_mixture(scene, point, out_dir, 100000, judge::secret_seed_or(32)));
 	double z = (bsdf.variance - mixture.variance) /
 	           std::sqrt(bsdf.variance_of_variance() + mixture.variance_of_variance());
 	double critical = stats::normal_quantile(1.0 - judge::significance()); // one-sided
@@ -299,7 +299,7 @@ TEST_CASE("a light hidden behind a blocker gives exactly 0", "[id:t6.lighting.bl
 	Scene scene = lit_floor(RHO, 0.5f, 1.0f, Spectrum{1.0f}, Vec3{2.0f, 0.1f, 0.0f});
 	add_object(scene, ceiling_square(0.6f, 0.5f), add_material(scene, diffuse_material(Spectrum{0.0f}), "blocker"));
 	scene.commit();
-	std::vector<Spectrum> values = render_samples(scene, one_pixel(sampling_seed(51)), 20000);
+	std::vector<Spectrum> values = render_samples(scene, one_pixel(judge::secret_seed_or(51)), 20000);
 	for (size_t i = 0; i < values.size(); i++) {
 		Spectrum v = values[i];
 		INFO("sample " << i << " of an occluded light: (" << v.r << ", " << v.g << ", " << v.b

@@ -88,7 +88,7 @@ TEST_CASE("sample_incoming returns the mixture's density 0.5 bsdf.pdf + 0.5 area
 		Scene scene = ceiling_light_scene(lit.half_side, lit.height);
 		Pathtracer pt(scene, Render_Settings{});
 		First_Problem problem =
-			check_mixture_samples(pt, lit, samples_at(scene, lit, 20000, sampling_seed(1)));
+			check_mixture_samples(pt, lit, samples_at(scene, lit, 20000, judge::secret_seed_or(1)));
 		INFO("sample_incoming at a lit point under a square light: " << problem.count << " of 20000 samples wrong. "
 		                                                             << problem.text);
 		CHECK(problem.count == 0);
@@ -98,7 +98,7 @@ TEST_CASE("sample_incoming returns the mixture's density 0.5 bsdf.pdf + 0.5 area
 		scene.environment = Env_Constant{Spectrum{0.2f}};
 		Pathtracer pt(scene, Render_Settings{});
 		First_Problem problem = check_mixture_samples(
-			pt, lit, samples_at(scene, lit, 20000, sampling_seed(2)));
+			pt, lit, samples_at(scene, lit, 20000, judge::secret_seed_or(2)));
 		INFO("sample_incoming under a square light and an environment: " << problem.count << " of 20000 samples "
 		                                                                 << "wrong. " << problem.text);
 		CHECK(problem.count == 0);
@@ -118,7 +118,7 @@ TEST_CASE("sample_incoming chooses BSDF or light sampling with a fair coin", "[i
 
 	const size_t n = 100000;
 	size_t towards_light = 0;
-	for (const Incoming_Sample& s : samples_at(scene, lit, n, sampling_seed(3))) {
+	for (const Incoming_Sample& s : samples_at(scene, lit, n, judge::secret_seed_or(3))) {
 		if (pt.area_lights_pdf(lit.position, s.direction) > 0.0f) towards_light++;
 	}
 	double z = stats::binomial_z(towards_light, n, expected), critical = judge::z_critical();
@@ -135,7 +135,7 @@ TEST_CASE("discrete BSDFs are sampled as they are, without light sampling", "[id
 	Trace hit = surface_point(lit.position, lit.normal);
 	Frame frame = Frame::from_normal(lit.normal);
 	Vec3 out_local = frame.to_local(lit.out_dir);
-	uint64_t seed = sampling_seed(4);
+	uint64_t seed = judge::secret_seed_or(4);
 
 	SECTION("a mirror reflects, always") {
 		BSDF mirror_bsdf{BSDF_Mirror{Spectrum{0.9f, 0.8f, 0.7f}}};
@@ -186,7 +186,7 @@ TEST_CASE("without lights, sample_incoming is plain BSDF sampling", "[id:t6.mixt
 	Trace hit = surface_point(Vec3{0.0f, 1.0f, 0.0f}, lit.normal);
 	Frame frame = Frame::from_normal(lit.normal);
 	Vec3 out_local = frame.to_local(lit.out_dir);
-	uint64_t seed = sampling_seed(5);
+	uint64_t seed = judge::secret_seed_or(5);
 	std::vector<Incoming_Sample> samples;
 	{
 		INFO("a scene without lights: check has_lights() before sampling the lights (handout §6.2)");
@@ -221,7 +221,7 @@ TEST_CASE("a direction no strategy can produce carries zero weight, never NaN", 
 	scene.commit();
 	Trace hit = surface_point(Vec3{0.0f}, Vec3{0.0f, 1.0f, 0.0f});
 	std::vector<Incoming_Sample> samples =
-		student_samples(scene, hit, GREY, out_dir, 2000, sampling_seed(6));
+		student_samples(scene, hit, GREY, out_dir, 2000, judge::secret_seed_or(6));
 	size_t zero_pdf = 0;
 	for (size_t i = 0; i < samples.size(); i++) {
 		const Incoming_Sample& s = samples[i];

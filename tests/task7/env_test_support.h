@@ -31,12 +31,6 @@ inline Vec3 direction_at_texel_point(uint32_t w, uint32_t h, double x, double y)
 	return uv_to_direction(Vec2(float(x / w), float(y / h)));
 }
 
-// The seed of a test case's random numbers: `public_seed`, or one drawn from the grading seed.
-inline uint64_t sampling_seed(uint64_t public_seed) {
-	std::optional<RNG> secret = judge::secret_inputs();
-	return judge::seed_or_public(secret, public_seed);
-}
-
 // n points rng.unit2() of a generator seeded with `seed`, in order.
 inline std::vector<Vec2> unit_points(uint64_t seed, size_t n) {
 	RNG rng(seed);

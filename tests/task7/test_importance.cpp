@@ -162,7 +162,7 @@ TEST_CASE("Image::sample draws directions with the density Image::pdf (chi-squar
 		settings[i].theta_cells = 2 * maps[i].image.h;
 		settings[i].phi_cells = 2 * maps[i].image.w;
 		settings[i].integration_resolution = 2;
-		settings[i].seed = sampling_seed(700 + i);
+		settings[i].seed = judge::secret_seed_or(700 + i);
 	}
 	auto request = [&](size_t i) {
 		return protocol::Image_Sampler{maps[i].image, unit_points(settings[i].seed, settings[i].samples),
@@ -195,7 +195,7 @@ TEST_CASE("a constant map: the weights L / pdf average 4 pi L and stay below twi
 	}
 	const size_t N = 200000;
 	const HDR_Image map(32, 16, L);
-	const uint64_t seed = sampling_seed(76);
+	const uint64_t seed = judge::secret_seed_or(76);
 	// The reference's weights are drawn while the subject samples.
 	auto reference_drawn = std::async(std::launch::async, [&] { return reference_weights(map, seed, N); });
 	Env_Samples samples = student_env_samples(map, true, unit_points(seed, N));
@@ -248,7 +248,7 @@ TEST_CASE("a constant map: the weights L / pdf average 4 pi L and stay below twi
 TEST_CASE("a black map still gives valid samples and a normalized pdf", "[id:t7.importance.black-map][task7][importance][fn:Image (tables)][uses:Image::sample][uses:Image::pdf]") {
 	// Nothing to importance-sample: the table must not divide by a zero total (handout §7.4).
 	HDR_Image black(16, 8);
-	std::vector<Vec2> us = unit_points(sampling_seed(77), 1000);
+	std::vector<Vec2> us = unit_points(judge::secret_seed_or(77), 1000);
 	std::vector<Vec3> samples = student_image_sampler(black, us, {}).queries.samples;
 	std::vector<float> pdfs = student_image_sampler(black, {}, samples).queries.pdfs;
 	for (size_t n = 0; n < samples.size(); n++) {

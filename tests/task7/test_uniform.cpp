@@ -51,7 +51,7 @@ TEST_CASE("Uniform::sample returns unit directions, even for u at the ends of [0
 
 TEST_CASE("Uniform::sample covers the sphere uniformly (chi-square)", "[id:t7.uniform.chi2][statistical:1][task7][uniform][fn:Uniform::sample]") {
 	stats::Sphere_Chi2_Settings settings;
-	settings.seed = sampling_seed(73);
+	settings.seed = judge::secret_seed_or(73);
 	protocol::Sampler_Answer answer =
 		student_uniform(unit_points(settings.seed, settings.samples), stats::sphere_chi2_pdf_directions(settings));
 	auto result = stats::sphere_chi2(answer.samples, answer.pdfs, settings);
@@ -74,7 +74,7 @@ TEST_CASE("Env_Constant samples uniformly: its pdf is 1 / (4 pi)", "[id:t7.env-c
 
 TEST_CASE("Env_Map without importance sampling samples the sphere uniformly", "[id:t7.env-map.uniform][task7][uniform][fn:Env_Map::sample][uses:Uniform::sample][uses:Uniform::pdf]") {
 	std::vector<Vec3> dirs = some_directions();
-	std::vector<Vec2> us = unit_points(sampling_seed(74), 100);
+	std::vector<Vec2> us = unit_points(judge::secret_seed_or(74), 100);
 	protocol::Env_Map_Queries::Answer env = student_env_map(gradient_map(), false, us, dirs);
 	for (size_t n = 0; n < dirs.size(); n++) {
 		INFO("Env_Map::pdf" << str(dirs[n]) << " = " << env.queries.pdfs[n]
@@ -93,7 +93,7 @@ TEST_CASE("Env_Map without importance sampling samples the sphere uniformly", "[
 TEST_CASE("Env_Map with importance sampling uses its Image sampler", "[id:t7.env-map.importance][task7][uniform][fn:Env_Map::sample][fn:Env_Map::pdf][uses:Image::sample][uses:Image::pdf]") {
 	// The pdfs are compared at directions spread like importance samples (the reference's).
 	HDR_Image image = gradient_map();
-	std::vector<Vec2> us = unit_points(sampling_seed(75), 100);
+	std::vector<Vec2> us = unit_points(judge::secret_seed_or(75), 100);
 	std::vector<Vec3> dirs;
 	Samplers::Sphere::Image reference(image);
 	for (Vec2 u : us) dirs.push_back(reference.sample(u));
