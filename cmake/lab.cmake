@@ -61,7 +61,7 @@ endfunction()
 # grading/bin/compile-student, checked as task N's file (N from <source>'s name).
 function(lab_student_compile target source)
 	get_filename_component(file ${source} NAME)
-	if(NOT file MATCHES "^task([1-7])_")
+	if(NOT file MATCHES "^task([1-8])_")
 		message(FATAL_ERROR "lab_student_compile: ${source} is not named like a task file (taskN_*.cpp)")
 	endif()
 	set(n ${CMAKE_MATCH_1})
@@ -72,8 +72,9 @@ function(lab_student_compile target source)
 		--task ${n} --checks ${LAB_CHECKS_DIR})
 endfunction()
 
-# The seven task files. Each is compiled once per implementation (student/ and reference/) into an
-# object library named task<N>_<impl>; programs choose one implementation per task at link time.
+# The task files: the seven graded tasks and task 8, adaptive sampling, an optional extension graded
+# on its own. Each is compiled once per implementation (student/ and reference/) into an object
+# library named task<N>_<impl>; programs choose one implementation per task at link time.
 set(LAB_TASK_FILES
 	task1_camera.cpp
 	task2_shapes.cpp
@@ -81,7 +82,9 @@ set(LAB_TASK_FILES
 	task4_path.cpp
 	task5_materials.cpp
 	task6_direct_lighting.cpp
-	task7_env_light.cpp)
+	task7_env_light.cpp
+	task8_adaptive.cpp)
+list(LENGTH LAB_TASK_FILES LAB_TASKS)
 
 # The instructors' repository has the reference sources; a student release (./lab export) has
 # prebuilt/libtask<N>_reference.a instead, and prebuilt/libaccelerator_fast.a for the framework's
@@ -149,12 +152,12 @@ endfunction()
 # accelerator's choice: only to prove that a test notices the wrong one. lab_link_tasks links a
 # target with them; the grading kit (grading/CMakeLists.txt) writes them out for grade-task.
 function(lab_composition out impl)
-	cmake_parse_arguments(PARSE_ARGV 2 arg "" "TASK1;TASK2;TASK3;TASK4;TASK5;TASK6;TASK7;ACCELERATOR" "")
+	cmake_parse_arguments(PARSE_ARGV 2 arg "" "TASK1;TASK2;TASK3;TASK4;TASK5;TASK6;TASK7;TASK8;ACCELERATOR" "")
 	if(arg_UNPARSED_ARGUMENTS)
 		message(FATAL_ERROR "lab_composition: unexpected arguments ${arg_UNPARSED_ARGUMENTS}")
 	endif()
 	set(parts "")
-	foreach(n RANGE 1 7)
+	foreach(n RANGE 1 ${LAB_TASKS})
 		set(impl_${n} ${impl})
 		if(arg_TASK${n})
 			set(impl_${n} ${arg_TASK${n}})

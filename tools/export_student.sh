@@ -39,7 +39,7 @@ for source in "${shipped_compiled[@]}"; do rm -f "$dest/$source"; done
 find "$dest/framework" -type d -empty -delete
 (cd "$root/grading" && cp -R CMakeLists.txt judge report checks "$dest/grading/" &&
 	cp bin/grade-task bin/compile-student bin/sandboxed "$dest/grading/bin/")
-(cd "$root/tests" && cp -R CMakeLists.txt support framework task1 task2 task3 task4 task5 task6 task6_nee task7 "$dest/tests/")
+(cd "$root/tests" && cp -R CMakeLists.txt support framework task1 task2 task3 task4 task5 task6 task6_nee task7 task8 "$dest/tests/")
 for library in "${libraries[@]}"; do cp "$objects/prebuilt/lib$library.a" "$dest/prebuilt/"; done
 
 # The students' README: the "For students" section of the instructors' README.
@@ -47,9 +47,9 @@ for library in "${libraries[@]}"; do cp "$objects/prebuilt/lib$library.a" "$dest
 	cat <<README
 # PathTracer Lab
 
-Build an end-to-end Monte Carlo path tracer in seven graded tasks. You edit exactly the seven files
-in \`student/\`; \`prebuilt/\` holds the reference solution of every task, compiled, so that each
-task is graded with the reference for the other six.
+Build an end-to-end Monte Carlo path tracer in seven graded tasks (and an optional eighth). You edit
+only the task files in \`student/\`; \`prebuilt/\` holds the reference solution of every task,
+compiled, so that each task is graded with the reference for the others.
 
 \`\`\`sh
 ./lab render-student    # installs missing Debian packages, builds, renders the Cornell box with your code

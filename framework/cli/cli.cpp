@@ -8,6 +8,7 @@
 #include "output_file.h"
 #include "progressive_render.h"
 #include "render.h"
+#include "sample_rate_map.h"
 #include "scene_loader.h"
 #include "terminal.h"
 

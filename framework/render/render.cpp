@@ -28,25 +28,47 @@ uint32_t first_of_pass(uint32_t first, const Render_Options& options) {
 	if (first <= offset) return offset;
 	return first + (options.passes - (first - offset) % options.passes) % options.passes;
 }
+
+// Task 8's loop over a pixel's samples (api/adaptive_sampling.h), held to its contract: samples 0, 1,
+// 2, ... each once, at most `samples` of them, and the count it returns the count it took.
+void sample_adaptively(const Adaptive_Sampling& adaptive, uint32_t samples,
+                       const std::function<Spectrum(uint32_t)>& take_sample) {
+	uint32_t taken = 0;
+	auto counted = [&](uint32_t s) {
+		if (s != taken || s >= samples) {
+			throw std::logic_error("Adaptive_Sampling::sample_pixel (task 8) asked for sample " + std::to_string(s) +
+			                       " of a pixel; expected sample " + std::to_string(taken) + " of at most " +
+			                       std::to_string(samples) + " (handout §8.3)");
+		}
+		taken++;
+		return take_sample(s);
+	};
+	uint32_t returned = adaptive.sample_pixel(samples, counted);
+	if (returned != taken) {
+		throw std::logic_error("Adaptive_Sampling::sample_pixel (task 8) took " + std::to_string(taken) +
+		                       " samples of a pixel but returned " + std::to_string(returned) + " (handout §8.3)");
+	}
+}
 } // namespace
 
 void render_tile(const Pathtracer& pt, const Render_Settings& settings, const Render_Options& options, const Tile& tile,
                  uint32_t first, uint32_t end, Film& film) {
 	Sampler sampler = pt.estimator().choice.sampler;
-	const Adaptive_Sampling& adaptive = options.adaptive;
 	for (uint32_t y = tile.y0; y < tile.y1; y++) {
 		for (uint32_t x = tile.x0; x < tile.x1; x++) {
 			size_t index = size_t(y) * film.w + x;
 			Pixel_Stats& pixel = film.pixels[index];
-			Luminance_Sums sums;
-			for (uint32_t s = first_of_pass(first, options); s < end; s += options.passes) {
+			auto take_sample = [&](uint32_t s) {
 				RNG rng = generator_for_sample(settings.seed, index, s, sampler);
 				Spectrum sample = pt.trace_pixel(x, y, rng);
 				pixel.add(sample);
-				if (adaptive.threshold <= 0.0f) continue;
-				sums.add(sample);
-				if ((s + 1) % adaptive.batch == 0 && pixel_converged(sums, adaptive)) break;
+				return sample;
+			};
+			if (options.adaptive.threshold > 0.0f) {
+				sample_adaptively(options.adaptive, end, take_sample);
+				continue;
 			}
+			for (uint32_t s = first_of_pass(first, options); s < end; s += options.passes) take_sample(s);
 		}
 	}
 }

@@ -27,6 +27,7 @@
 // test case, never one request per ray. Each request below names the task function it runs, its
 // inputs and its Answer. Functions that sample take one generator (RNG_State) for the whole batch
 // and draw from it in the order of the inputs, as a loop over the inputs would.
+#include "adaptive_sampling.h"
 #include "material.h"
 #include "pathtracer.h"
 #include "estimator.h"
@@ -473,6 +474,72 @@ struct Env_Constant_Queries {
 	}
 };
 
+// ---- Task 8 ----
+
+// An Adaptive_Sampling (api/adaptive_sampling.h) on the wire.
+struct Adaptive_Rule {
+	float threshold = 0.0f;
+	uint32_t min_samples = 0, batch = 0;
+	template<class A> void fields(A& a) { a(threshold, min_samples, batch); }
+	Adaptive_Sampling restored() const { return Adaptive_Sampling{threshold, min_samples, batch}; }
+};
+
+// rule.pixel_converged(sums) for each query: 1 where it may stop, else 0.
+struct Pixel_Converged {
+	static constexpr Kind KIND{24};
+	static constexpr const char* NAME = "pixel_converged";
+	static constexpr const char* FUNCTIONS = "Adaptive_Sampling::pixel_converged";
+	struct Query {
+		Adaptive_Rule rule;
+		uint32_t n = 0;
+		double sum = 0.0, sum_of_squares = 0.0;
+		template<class A> void fields(A& a) { a(rule, n, sum, sum_of_squares); }
+	};
+	std::vector<Query> queries;
+	template<class A> void fields(A& a) { a(queries); }
+	using Answer = std::vector<uint32_t>;
+	bool fits(const Answer& a) const { return a.size() == queries.size(); }
+};
+
+// rule.sample_pixel(max_samples, take_sample) for each pixel, whose take_sample(s) returns the grey
+// sample Spectrum(samples[s]) (0 past the end): the indices it asked for, in order (at most twice
+// max_samples of them), and the count it returned.
+struct Sample_Pixels {
+	static constexpr Kind KIND{25};
+	static constexpr const char* NAME = "sample_pixels";
+	static constexpr const char* FUNCTIONS = "Adaptive_Sampling::sample_pixel";
+	struct Pixel {
+		uint32_t max_samples = 0;
+		std::vector<float> samples;
+		template<class A> void fields(A& a) { a(max_samples, samples); }
+	};
+	struct Result {
+		std::vector<uint32_t> asked;
+		uint32_t returned = 0;
+		template<class A> void fields(A& a) { a(asked, returned); }
+	};
+	Adaptive_Rule rule;
+	std::vector<Pixel> pixels;
+	template<class A> void fields(A& a) { a(rule, pixels); }
+	using Answer = std::vector<Result>;
+	bool fits(const Answer& a) const { return a.size() == pixels.size(); }
+};
+
+// render(Pathtracer(scene, settings)) on `threads` threads with adaptive sampling by `rule`: every
+// pixel's samples drawn by the framework as `./lab render --adaptive` draws them.
+struct Adaptive_Render {
+	static constexpr Kind KIND{26};
+	static constexpr const char* NAME = "adaptive_render";
+	static constexpr const char* FUNCTIONS = "an adaptive render of the scene with your code";
+	Scene scene;
+	Render_Settings settings;
+	Adaptive_Rule rule;
+	uint32_t threads = 1;
+	template<class A> void fields(A& a) { a(scene, settings, rule, threads); }
+	using Answer = Film;
+	bool fits(const Answer& a) const { return a.w == settings.width && a.h == settings.height; }
+};
+
 // ---- Every request, once ----
 // The judge asks them (judge.h); the subject answers each with answer(request), which each task's
 // answers/task<N>.h defines; kind_name, kind_functions and the subject's dispatch are made from
@@ -500,7 +567,10 @@ using Requests = std::tuple<
 	Uniform_Sphere,
 	Image_Sampler,
 	Env_Map_Queries,
-	Env_Constant_Queries>;
+	Env_Constant_Queries,
+	Pixel_Converged,
+	Sample_Pixels,
+	Adaptive_Render>;
 
 // Each request's KIND is its own.
 template<class... Request> constexpr bool kinds_differ(std::tuple<Request...>*) {

@@ -21,6 +21,7 @@
 #include "answers/task6.h"
 #include "answers/task6_nee.h"
 #include "answers/task7.h"
+#include "answers/task8.h"
 
 #include <cerrno>
 #include <cstdio>

@@ -37,7 +37,7 @@ std::string task_name() {
 	if (!task.empty()) return "task" + task;
 	std::string executable = executable_name();
 	std::smatch match;
-	if (std::regex_search(executable, match, std::regex("task([1-7])"))) return "task" + match[1].str();
+	if (std::regex_search(executable, match, std::regex("task([1-8])"))) return "task" + match[1].str();
 	return executable;
 }
 

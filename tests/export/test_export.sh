@@ -103,8 +103,8 @@ for expected in "handouts/task1_camera.md:.*framework/no_such_file.h" "handouts/
 done
 echo "export test: release_references reports a planted missing file, section, command, function and commented path"
 # Every handout tells what to do when the student's code crashes or hangs (the README's section).
-for handout in "$release"/handouts/task[1-7]_*.md; do
-	n=$(basename "$handout" | sed 's/^task\([1-7]\)_.*/\1/')
+for handout in "$release"/handouts/task[1-8]_*.md; do
+	n=$(basename "$handout" | sed 's/^task\([1-8]\)_.*/\1/')
 	grep -qF "./lab grade $n --debug" "$handout" && grep -qF "README.md#when-it-crashes-or-hangs" "$handout" ||
 		fail "$(basename "$handout") does not point to ./lab grade $n --debug and the README's \"When it crashes or hangs\""
 done

@@ -1,0 +1,49 @@
+#pragma once
+// Task 8's grader: the stopping rule of handout §8.2 as the grader states it (in double, with how
+// clear each decision is), and every call of the student's code, each one request to the subject.
+#include "adaptive_sampling.h"
+#include "protocol.h"
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace task8 {
+
+// A decision of the rule that float rounding cannot turn: the half-width 1.96 s / sqrt(n) and the
+// bound threshold * m differ by more than this fraction of the larger. Two correct programs (sums
+// kept in double, the variance from them or by Welford's update) differ by a few 1e-16 relative, and
+// only near m = 0 or s = 0 by more; every mistake the grader looks for moves the half-width by a
+// percent or more (n for n - 1 by 1/(2n) >= 0.4 % up to n = 128, and beyond it by s^2 for s, the
+// missing factor 1.96 or the mean).
+constexpr double CLEAR = 1e-3;
+
+struct Verdict {
+	bool stops = false;
+	bool clear = true; // false: too close to the boundary to tell rounding from a mistake
+};
+
+// The rule for n samples with these sums (handout §8.2).
+Verdict rule_verdict(const Adaptive_Sampling& rule, uint32_t n, double sum, double sum_of_squares);
+
+// Where the batch loop of handout §8.3 stops on these sample values (grey samples, luminance y):
+// the count, or nothing where a check on the way was not clear.
+std::optional<uint32_t> expected_stop(const Adaptive_Sampling& rule, uint32_t max_samples,
+                                      const std::vector<float>& values);
+// The same for luminance values already computed (a render's samples).
+std::optional<uint32_t> expected_stop_of_luminance(const Adaptive_Sampling& rule, uint32_t max_samples,
+                                                   const std::vector<double>& luminance);
+
+protocol::Adaptive_Rule on_wire(const Adaptive_Sampling& rule);
+
+// The sums of n samples alternating a, b, a, b, ... (grey), as Luminance_Sums::add makes them.
+Luminance_Sums alternating(float a, float b, uint32_t n);
+
+// The student's pixel_converged for each (rule, sums).
+std::vector<bool> student_converged(const std::vector<std::pair<Adaptive_Sampling, Luminance_Sums>>& queries);
+
+// The student's sample_pixel for each pixel (its grey sample values; max_samples each).
+std::vector<protocol::Sample_Pixels::Result> student_sample_pixels(const Adaptive_Sampling& rule, uint32_t max_samples,
+                                                                   const std::vector<std::vector<float>>& pixels);
+
+} // namespace task8
