@@ -1,10 +1,12 @@
 // Task 8, handout §8.2: Adaptive_Sampling::pixel_converged, on sums whose mean and standard deviation
 // are known in closed form. Every query of a test case goes to the subject in one request.
 #include "adaptive_spec.h"
+#include "judge.h"
 
 #include "lab_catch2.h"
 
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -74,14 +76,25 @@ TEST_CASE("pixel_converged: a pixel stops once 1.96 s / sqrt(n) <= threshold * m
 	struct Pair {
 		float a, b, threshold;
 	};
-	const Pair pairs[] = {
+	std::vector<Pair> pairs{
 		{3.0f, 7.0f, 0.08f},     // m 5, d 2: stops from n = 98 on
 		{3.0f, 7.0f, 0.0802f},   // the boundary at n - 1 >= 95.5: n = 96 stops only with n for n - 1
 		{1.0f, 3.0f, 0.05f},     // m 2, d 1: from n = 386 on
 		{0.5f, 0.7f, 0.02f},     // m 0.6, d 0.1: from n = 268 on
 		{2.0f, 10.0f, 0.2f},     // m 6, d 4: from n = 44 on
-		{0.02f, 0.06f, 0.15f},   // a dark pixel, m 0.04, d 0.02: from n = 172 on
+		{0.02f, 0.06f, 0.07f},   // a dark pixel, m 0.04, d 0.02: from n = 198 on
 	};
+	if (std::optional<RNG> secret = judge::secret_inputs()) {
+		// Under a grading seed, other pixels: a in [0.01, 5], b = a (1.2 ... 4), and the boundary
+		// n - 1 >= X at X = 2k + 1.5 for an even count 2k from 40 to 380, where n for n - 1 answers the
+		// count 2k + 2 wrong.
+		pairs.clear();
+		for (int i = 0; i < 6; i++) {
+			float a = 0.01f + 5.0f * secret->unit(), b = a * (1.2f + 2.8f * secret->unit());
+			double m = (double(a) + b) / 2.0, d = (double(b) - a) / 2.0, x = 2.0 * (20 + secret->integer(171)) + 1.5;
+			pairs.push_back({a, b, float(1.96 * d / (m * std::sqrt(x)))});
+		}
+	}
 	std::vector<Case> cases;
 	for (const Pair& p : pairs) {
 		Adaptive_Sampling rule = rule_with(p.threshold);
@@ -99,17 +112,23 @@ TEST_CASE("pixel_converged: a pixel stops once 1.96 s / sqrt(n) <= threshold * m
 
 TEST_CASE("pixel_converged: never before min_samples; constant pixels, black ones too, stop at it",
           "[id:t8.converged.minimum][task8][fn:Adaptive_Sampling::pixel_converged]") {
+	std::vector<uint32_t> minimums{32, 64};
+	std::vector<float> values{0.0f, 0.25f, 7.0f};
+	if (std::optional<RNG> secret = judge::secret_inputs()) { // under a grading seed, others
+		minimums = {8 + 2 * secret->integer(13), 40 + 2 * secret->integer(21)};
+		values = {0.0f, 0.01f + secret->unit(), 1.0f + 9.0f * secret->unit()};
+	}
 	std::vector<Case> cases;
-	for (uint32_t min_samples : {32u, 64u}) {
+	for (uint32_t min_samples : minimums) {
 		// Alternating 1, 3 with threshold 0.5 would stop from n = 5 on: min_samples holds it back.
 		Adaptive_Sampling rule = rule_with(0.5f, min_samples);
-		for (uint32_t n : {2u, 4u, 16u, min_samples - 2, min_samples, min_samples + 16}) {
+		for (uint32_t n : {2u, 4u, min_samples / 2, min_samples - 2, min_samples, min_samples + 16}) {
 			cases.push_back({rule, alternating(1.0f, 3.0f, n), "alternating 1, 3"});
 		}
 		// Constant samples: s = 0, so the pixel stops at min_samples and not before, black ones too
 		// (0 <= threshold * 0).
 		rule.threshold = 0.01f;
-		for (float value : {0.0f, 0.25f, 7.0f}) {
+		for (float value : values) {
 			for (uint32_t n : {min_samples - 1, min_samples, 2 * min_samples}) {
 				std::ostringstream words;
 				words << "all " << value;

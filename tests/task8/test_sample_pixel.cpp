@@ -6,6 +6,7 @@
 
 #include "lab_catch2.h"
 
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -66,13 +67,22 @@ TEST_CASE("sample_pixel: samples 0, 1, 2, ... in order, each once, at most max_s
 	const std::string hint = "Call take_sample(s) for s = 0, 1, 2, ... in order, check after every batch, never take "
 	                         "more than max_samples, and return the number taken (handout §8.3)";
 	Adaptive_Sampling rule = rule_with(0.01f);
+	float constant = 0.5f;
+	std::vector<uint32_t> maxima{100, 8};
+	if (std::optional<RNG> secret = judge::secret_inputs()) { // under a grading seed, others
+		constant = 0.01f + 4.0f * secret->unit();
+		maxima = {33 + secret->integer(200), 1 + secret->integer(31)};
+	}
 	// Constant samples: the rule allows a stop at the first check from min_samples on.
-	std::vector<Result> got = student_sample_pixels(rule, 256, {std::vector<float>(256, 0.5f), std::vector<float>(256, 0.0f)});
-	check_took(got[0], rule.min_samples, describe(rule, 256, "all 0.5"), hint);
+	std::vector<Result> got = student_sample_pixels(rule, 256, {std::vector<float>(256, constant), std::vector<float>(256, 0.0f)});
+	std::ostringstream all;
+	all << "all " << constant;
+	check_took(got[0], rule.min_samples, describe(rule, 256, all.str()), hint);
 	check_took(got[1], rule.min_samples, describe(rule, 256, "all 0 (a black pixel)"), hint);
-	// Samples 1, 100, 1, 100, ... never converge at threshold 0.01 within 100 samples: every sample,
+	// Samples 1, 100, 1, 100, ... never converge at threshold 0.01 within 256 samples: every sample,
 	// also where max_samples is not a multiple of the batch, or below min_samples.
-	for (uint32_t max_samples : {100u, 8u}) {
+	for (uint32_t max_samples : maxima) {
+		REQUIRE(expected_stop(rule, max_samples, alternating_values(1.0f, 100.0f, max_samples)) == max_samples);
 		got = student_sample_pixels(rule, max_samples, {alternating_values(1.0f, 100.0f, max_samples)});
 		check_took(got[0], max_samples, describe(rule, max_samples, "1, 100, 1, 100, ..."), hint);
 	}
@@ -89,13 +99,28 @@ TEST_CASE("sample_pixel: checks after every batch, and stops at the first batch 
 		std::string samples;
 		uint32_t stop;
 	};
-	const Expected cases[] = {
+	std::vector<Expected> cases{
 		{rule_with(0.08f, 32, 16), alternating_values(3.0f, 7.0f, 256), "3, 7, 3, 7, ...", 112},
 		{rule_with(0.08f, 32, 10), alternating_values(3.0f, 7.0f, 256), "3, 7, 3, 7, ...", 100},
 		{rule_with(0.08f, 32, 7), alternating_values(3.0f, 7.0f, 256), "3, 7, 3, 7, ...", 98},
 		{rule_with(0.01f, 20, 7), std::vector<float>(256, 2.0f), "all 2", 21},
 	};
+	if (std::optional<RNG> secret = judge::secret_inputs()) {
+		// Under a grading seed, other pixels, batches (3 to 20) and minimums (8 to 40): where the rule
+		// stops them follows from the closed form of t8.converged.rule, as the grader states it.
+		for (Expected& c : cases) {
+			float a = 0.05f + 5.0f * secret->unit(), b = a * (1.5f + 3.0f * secret->unit());
+			c.rule = rule_with(0.05f + 0.15f * secret->unit(), 8 + secret->integer(33), 3 + secret->integer(18));
+			c.values = alternating_values(a, b, 256);
+			std::ostringstream words;
+			words << a << ", " << b << ", " << a << ", " << b << ", ...";
+			c.samples = words.str();
+			std::optional<uint32_t> stop = expected_stop(c.rule, 256, c.values);
+			c.stop = stop.value_or(0);
+		}
+	}
 	for (const Expected& c : cases) {
+		if (c.stop == 0) continue; // a drawn pixel too close to call at a check (task8::CLEAR)
 		REQUIRE(expected_stop(c.rule, 256, c.values) == c.stop); // the closed form above, checked
 		std::vector<Result> got = student_sample_pixels(c.rule, 256, {c.values});
 		check_took(got[0], c.stop, describe(c.rule, 256, c.samples),
