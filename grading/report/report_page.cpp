@@ -159,6 +159,11 @@ void test_case(std::ostream& out, const Test_Case& c, const std::string& log_fil
 	out << "<div class=\"case" << (c.passed ? " passed" : "") << "\">\n<h3>" << (c.passed ? "✓ " : "✗ ")
 	    << escape(c.name) << "</h3>\n";
 	for (const Image_Test& test : c.image_tests) image_test(out, test, c.failures.empty());
+	if (!c.figures.empty()) {
+		out << "<div class=\"images\">\n";
+		for (const Figure& f : c.figures) figure(out, f.file, escape(f.caption));
+		out << "</div>\n";
+	}
 	size_t shown = std::min(c.failures.size(), FAILURES_SHOWN);
 	failures(out, c.failures, 0, shown);
 	if (c.failures.size() > shown) {

@@ -11,11 +11,12 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 const std::set<std::string> VISIBILITIES{"visible", "after_published", "after_due_date", "hidden"};
-const std::map<int, double> DEFAULT_POINTS{{1, 5}, {2, 15}, {3, 18}, {4, 15}, {5, 15}, {6, 8}, {7, 14}};
+const std::map<int, double> DEFAULT_POINTS{{1, 5}, {2, 15}, {3, 18}, {4, 15}, {5, 15}, {6, 8}, {7, 14}, {8, 0}};
 const char* const ABOUT = "Points per task and their split over its test cases (grading/report/rubric.h), each named by "
                           "the id of its judge's TEST_CASE (its tag [id:ID]; the title is a reminder, grading ignores "
                           "it). Weight 0: a requirement the shipped stubs pass, which earns nothing by itself and "
-                          "costs a test case's average points when it fails.";
+                          "costs a test case's average points when it fails. Task 8 (adaptive sampling) is an optional "
+                          "extension, worth 0 points unless the course gives it some.";
 
 // Every test case of a judge that ran has an id (the configuration checks it: cmake/test_case_ids.cmake).
 void check_ids(const Task_Result& result) {
@@ -95,11 +96,11 @@ Rubric Rubric::read(const std::filesystem::path& file) {
 		std::string where = file.string() + ": tasks[" + std::to_string(rubric.tasks.size()) + "]";
 		if (!task.contains("task") || !task["task"].is_number_integer() || !task.contains("points") ||
 		    !task["points"].is_number() || !task.contains("test_cases") || !task["test_cases"].is_array()) {
-			throw Rubric_Error(where + ": expected \"task\" (1-7), \"points\" and \"test_cases\"");
+			throw Rubric_Error(where + ": expected \"task\" (1-8), \"points\" and \"test_cases\"");
 		}
 		int number = task["task"];
-		if (number < 1 || number > 7 || rubric.tasks.count(number)) {
-			throw Rubric_Error(where + ": task " + std::to_string(number) + " is not 1-7 or appears twice");
+		if (number < 1 || number > 8 || rubric.tasks.count(number)) {
+			throw Rubric_Error(where + ": task " + std::to_string(number) + " is not 1-8 or appears twice");
 		}
 		Task t;
 		t.points = task["points"];

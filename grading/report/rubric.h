@@ -17,7 +17,7 @@
 // of its task is worth on average). A task scores max(0, earned - penalties): the shipped stubs score
 // exactly 0, the reference full marks. "visibility" (Gradescope's words: visible, after_published,
 // after_due_date, hidden; default visible) says when students see the test case. Every test case of
-// every judge of tasks 1-7 must be in the rubric, and nothing else (checked when the build is
+// every judge of tasks 1-8 must be in the rubric, and nothing else (checked when the build is
 // configured, and again when grading).
 #include "task_result.h"
 
@@ -68,7 +68,7 @@ struct Task_Score {
 };
 
 // A rubric for the judges as they are: the default points per task (the course's split), and every
-// test case of every task weighted 1, or 0 where the shipped stubs pass it (`stubs`: the seven tasks'
+// test case of every task weighted 1, or 0 where the shipped stubs pass it (`stubs`: the tasks'
 // results of grading the stubs). Instructors then edit weights and visibilities by hand.
 void write_default_rubric(std::ostream& out, const std::vector<Task_Result>& stubs);
 

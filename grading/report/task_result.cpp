@@ -19,6 +19,7 @@ const std::vector<Task_Info>& lab_tasks() {
 		{5, "materials", "student/task5_materials.cpp", "handouts/task5_materials.md"},
 		{6, "direct lighting", "student/task6_direct_lighting.cpp", "handouts/task6_direct_lighting.md"},
 		{7, "environment light", "student/task7_env_light.cpp", "handouts/task7_env_light.md"},
+		{8, "adaptive sampling (optional)", "student/task8_adaptive.cpp", "handouts/task8_adaptive.md"},
 	};
 	return tasks;
 }
@@ -101,6 +102,10 @@ Test_Case read_test_case(const fs::path& dir, const Json& record) {
 	}
 	for (const Json& item : record.value("attachments", Json::array())) {
 		if (item.value("type", "") == "image_test") test_case.image_tests.push_back(read_image_test(dir, item));
+		if (item.value("type", "") != "figures") continue;
+		for (const Json& figure : item.value("figures", Json::array())) {
+			test_case.figures.push_back(Figure{dir / figure.value("file", ""), figure.value("caption", "")});
+		}
 	}
 	return test_case;
 }

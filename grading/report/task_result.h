@@ -40,6 +40,12 @@ struct Image_Test {
 	double z_critical = 0.0;
 };
 
+// A picture a test case shows (an attachment of type "figures"), e.g. task 8's rate maps.
+struct Figure {
+	std::filesystem::path file;
+	std::string caption;
+};
+
 struct Test_Case {
 	std::string id;          // the judge's tag [id:ID], which the rubric grades by; "" if it has none
 	std::string name, where; // name: the TEST_CASE's title
@@ -47,6 +53,7 @@ struct Test_Case {
 	std::vector<Failure> failures;
 	size_t more_failures = 0; // failed checks beyond those recorded
 	std::vector<Image_Test> image_tests;
+	std::vector<Figure> figures;
 };
 
 // A test case as the judge lists them all, whether it ran or not.

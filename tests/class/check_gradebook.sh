@@ -9,18 +9,18 @@ rubric=$1 expected=$2 book=$3 minimum=$4
 fail() { echo "gradebook check: $*" >&2; exit 1; }
 # The rubric's points per task, in task order.
 mapfile -t points < <(grep -o '"points": *[0-9.]*' "$rubric" | grep -o '[0-9.]*$')
-[ ${#points[@]} -eq 7 ] || fail "$rubric does not give points for seven tasks"
+[ ${#points[@]} -eq 8 ] || fail "$rubric does not give points for eight tasks"
 rows=0
-while IFS=, read -r id e1 e2 e3 e4 e5 e6 e7; do
+while IFS=, read -r id e1 e2 e3 e4 e5 e6 e7 e8; do
 	[ "$id" = id ] && continue
 	rows=$((rows + 1))
 	line=$(grep "^$id," "$book") || fail "$id is missing from $book"
-	IFS=, read -r _ p1 p2 p3 p4 p5 p6 p7 total status <<<"$line"
+	IFS=, read -r _ p1 p2 p3 p4 p5 p6 p7 p8 total status <<<"$line"
 	[ "$status" = graded ] || fail "$id: status '$status'"
-	expect=("$e1" "$e2" "$e3" "$e4" "$e5" "$e6" "$e7")
-	got=("$p1" "$p2" "$p3" "$p4" "$p5" "$p6" "$p7")
+	expect=("$e1" "$e2" "$e3" "$e4" "$e5" "$e6" "$e7" "$e8")
+	got=("$p1" "$p2" "$p3" "$p4" "$p5" "$p6" "$p7" "$p8")
 	sum=0
-	for i in 0 1 2 3 4 5 6; do
+	for i in 0 1 2 3 4 5 6 7; do
 		full=${points[$i]} p=${got[$i]}
 		case "${expect[$i]}" in
 		full) awk -v p="$p" -v f="$full" 'BEGIN { exit !(p == f) }' || fail "$id: task $((i + 1)) scored $p, expected all $full points" ;;

@@ -30,7 +30,7 @@ echo image >"$LAB_REPORT_DIR/task${LAB_REPORT_TASK}_cornell_run$(cat "$LAB_TEST_
 exit 1
 GRADER
 : >"$build/grading/kit.env"
-for n in 1 2 3 4 5 6 7; do
+for n in 1 2 3 4 5 6 7 8; do
 	cp "$tmp/grader" "$build/tests/judge_task$n"
 	echo "LAB_JUDGE_$n='$build/tests/judge_task$n'" >>"$build/grading/kit.env"
 	echo "LAB_STUDENT_SUBJECT_$n='$build/subject_task${n}_student'" >>"$build/grading/kit.env"

@@ -30,7 +30,7 @@ has grading/allow-unsandboxed
 has grading/bin/sandboxed
 has grading/bin/grade-task
 unzip -Z "$out/autograder.zip" grading/seed | grep -q '^-rw-------' || fail "grading/seed is readable by others than its owner"
-for n in 1 2 3 4 5 6 7; do has "prebuilt/libtask${n}_reference.a"; done
+for n in 1 2 3 4 5 6 7 8; do has "prebuilt/libtask${n}_reference.a"; done
 solution_sources=$(grep -xF -f <(cut -d' ' -f2 "$out/objects/shipped_compiled.txt") "$out/bundle.txt" || true)
 [ -z "$solution_sources" ] || fail "the bundle holds solution sources: $(head -3 <<<"$solution_sources")"
 echo "bundle test: bundle made ($(du -h "$out/autograder.zip" | cut -f1)) in $((SECONDS - start)) s"

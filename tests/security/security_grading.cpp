@@ -17,7 +17,7 @@ namespace fs = std::filesystem;
 
 const std::map<int, std::string> TASK_FILES{
 	{1, "task1_camera.cpp"},    {2, "task2_shapes.cpp"},          {3, "task3_bvh.cpp"},      {4, "task4_path.cpp"},
-	{5, "task5_materials.cpp"}, {6, "task6_direct_lighting.cpp"}, {7, "task7_env_light.cpp"}};
+	{5, "task5_materials.cpp"}, {6, "task6_direct_lighting.cpp"}, {7, "task7_env_light.cpp"}, {8, "task8_adaptive.cpp"}};
 
 std::string read_file(const fs::path& path) {
 	std::ifstream in(path, std::ios::binary);
@@ -105,7 +105,7 @@ std::map<int, Grade> grade_files(const Temp_Dir& dir, const std::map<int, std::s
 		}
 	}
 	std::map<int, Grade> grades;
-	for (int task = 1; task <= 7; task++) {
+	for (const auto& [task, file] : TASK_FILES) {
 		std::string name = "task" + std::to_string(task);
 		bool not_built = fs::exists(out / (name + ".build.log"));
 		if (!not_built && !fs::exists(out / (name + ".json"))) continue; // not graded

@@ -37,7 +37,7 @@ std::string hostile_source(const std::string& name, const std::filesystem::path&
 
 // Grades a fresh submission of the given task files (task number -> text) in `dir` with the grading
 // kit, as ./lab grade-submission does (output folder dir/out), and returns the result of each task
-// it graded. Without --tasks in `options` all seven are graded, in order, into that one folder: as
+// it graded. Without --tasks in `options` all eight are graded, in order, into that one folder: as
 // Gradescope grades.
 std::map<int, Grade> grade_files(const Temp_Dir& dir, const std::map<int, std::string>& files,
                                  const std::string& options);

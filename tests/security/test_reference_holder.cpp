@@ -1,8 +1,8 @@
 // The security suite's test cases of what a student who holds the student release can hand in
-// (issue 35; DESIGN.md, decided points 6 to 8): the compiled reference of all seven tasks, the
+// (issue 35; DESIGN.md, decided points 6 to 8): the compiled reference of every task, the
 // reference images of the graded scenes and the framework's headers. Each hostile file must earn
 // nothing beyond its honest part in every sandbox mode (the ctest tests security*, by LAB_SANDBOX).
-// Tagged [whole]: each submission is graded as Gradescope grades one, all seven tasks in order into
+// Tagged [whole]: each submission is graded as Gradescope grades one, all eight tasks in order into
 // one output folder, the tasks without a hostile file being the shipped stubs (./lab acceptance, in
 // every mode: the ctest tests security_whole, security_process_limits, security_ordinary_user).
 #include "image_io.h"
@@ -18,13 +18,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Grades a submission of `files` (see above), all seven tasks; `options` go to grade-submission.
+// Grades a submission of `files` (see above), all eight tasks; `options` go to grade-submission.
 // Every task graded was, and where it had no hostile file (the shipped stubs) it earned no points
 // (the stubs pass a few test cases, which the rubric weighs 0).
 std::map<int, Grade> grade_submission(const Temp_Dir& dir, const std::map<int, std::string>& files,
                                       const std::string& options = "") {
 	std::map<int, Grade> grades = grade_files(dir, files, options);
-	REQUIRE(grades.size() == 7);
+	REQUIRE(grades.size() == TASK_FILES.size());
 	for (const auto& [task, graded] : grades) {
 		if (files.count(task)) continue;
 		INFO("task " << task << " (the shipped stub)");

@@ -39,7 +39,7 @@ mkdir "$tmp/none"
 KIT=$kit "$root/grading/bin/grade-submission" "$tmp/none" --out "$tmp/graded" --link-only >"$tmp/link.log" 2>&1 ||
 	{ cat "$tmp/link.log" >&2; fail "grade-submission --link-only failed"; }
 
-for n in 1 2 3 4 5 6 7; do
+for n in 1 2 3 4 5 6 7 8; do
 	forbidden=()
 	[[ $n == 2 || $n == 3 ]] && forbidden+=("${fast_accelerator[@]}")
 	[[ $n == 4 ]] && forbidden+=("${nee_integrator[@]}")
@@ -60,7 +60,7 @@ echo "subject symbols test: no subject links the framework code that can answer 
 # hit), weakly or not, where the linker could choose it over the student's.
 # shellcheck source=/dev/null
 source "$kit"
-for n in 1 2 3 4 5 6 7; do
+for n in 1 2 3 4 5 6 7 8; do
 	link_var=LAB_SUBJECT_LINK_$n
 	mapfile -t inputs < <(tr ' ' '\n' <<<"${!link_var}" | grep '^/')
 	defined=$(nm --defined-only --format=posix "${inputs[@]}" 2>/dev/null | awk 'NF >= 2 { print $1 }' | sort -u)
@@ -104,7 +104,7 @@ check_segments() { # PROGRAM
 			if (bad != "") { print program ":" bad; exit 1 }
 		}' || fail "$1 maps something executable that is not its code"
 }
-for n in 1 2 3 4 5 6 7; do
+for n in 1 2 3 4 5 6 7 8; do
 	check_segments "$subjects/subject_task${n}_student"
 	check_segments "$tmp/graded/work/task$n/subject_task$n"
 done

@@ -6,7 +6,10 @@
 #include "adaptive_spec.h"
 #include "estimator.h"
 #include "graded_images.h"
+#include "image_io.h"
 #include "judge.h"
+#include "report_record.h"
+#include "sample_rate_map.h"
 #include "sampler.h"
 
 #include "lab_catch2.h"
@@ -80,11 +83,32 @@ uint32_t taken(const Pixel_Stats& pixel) {
 	return pixel.count + pixel.non_finite;
 }
 
+// For the grade report: the render's rate map beside the one the rule gives (where a pixel's
+// decision was too close to call, the render's own count).
+void report_rate_maps(const Adaptive_Case& c) {
+	Film expected = c.film;
+	for (size_t i = 0; i < expected.pixels.size(); i++) {
+		if (c.expected[i] == 0) continue;
+		expected.pixels[i].count = c.expected[i];
+		expected.pixels[i].non_finite = 0;
+	}
+	std::string render = report::task_name() + "_rate_map.png", rule = report::task_name() + "_rate_map_rule.png";
+	write_png(report::file(render), sample_rate_map(c.film, MAX_SAMPLES));
+	write_png(report::file(rule), sample_rate_map(expected, MAX_SAMPLES));
+	std::ostringstream most;
+	most << MAX_SAMPLES;
+	report::attach({{"type", "figures"},
+	                {"figures",
+	                 {{{"file", render}, {"caption", "The samples each pixel of your render took (black none, white " + most.str() + ")"}},
+	                  {{"file", rule}, {"caption", "The samples the rule gives each pixel"}}}}});
+}
+
 } // namespace
 
 TEST_CASE("adaptive render: each pixel takes the samples the rule gives it",
           "[id:t8.render.rate-map][task8][uses:Adaptive_Sampling::sample_pixel][uses:Adaptive_Sampling::pixel_converged]") {
 	const Adaptive_Case& c = adaptive_case();
+	if (report::enabled()) report_rate_maps(c);
 	size_t compared = 0, wrong = 0;
 	std::string first;
 	for (uint32_t y = 0; y < c.settings.height; y++) {

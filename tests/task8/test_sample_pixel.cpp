@@ -68,19 +68,25 @@ TEST_CASE("sample_pixel: samples 0, 1, 2, ... in order, each once, at most max_s
 	                         "more than max_samples, and return the number taken (handout §8.3)";
 	Adaptive_Sampling rule = rule_with(0.01f);
 	float constant = 0.5f;
+	uint32_t most = 256;
 	std::vector<uint32_t> maxima{100, 8};
 	if (std::optional<RNG> secret = judge::secret_inputs()) { // under a grading seed, others
+		rule = rule_with(0.005f + 0.05f * secret->unit(), 8 + secret->integer(41), 3 + secret->integer(18));
 		constant = 0.01f + 4.0f * secret->unit();
-		maxima = {33 + secret->integer(200), 1 + secret->integer(31)};
+		most = 200 + secret->integer(300);
+		maxima = {33 + secret->integer(200), 1 + secret->integer(rule.min_samples)};
 	}
 	// Constant samples: the rule allows a stop at the first check from min_samples on.
-	std::vector<Result> got = student_sample_pixels(rule, 256, {std::vector<float>(256, constant), std::vector<float>(256, 0.0f)});
+	std::vector<std::vector<float>> constants{std::vector<float>(most, constant), std::vector<float>(most, 0.0f)};
+	uint32_t stop = *expected_stop(rule, most, constants[0]);
+	REQUIRE(stop == (rule.min_samples + rule.batch - 1) / rule.batch * rule.batch); // the first check from the minimum
+	std::vector<Result> got = student_sample_pixels(rule, most, constants);
 	std::ostringstream all;
 	all << "all " << constant;
-	check_took(got[0], rule.min_samples, describe(rule, 256, all.str()), hint);
-	check_took(got[1], rule.min_samples, describe(rule, 256, "all 0 (a black pixel)"), hint);
-	// Samples 1, 100, 1, 100, ... never converge at threshold 0.01 within 256 samples: every sample,
-	// also where max_samples is not a multiple of the batch, or below min_samples.
+	check_took(got[0], stop, describe(rule, most, all.str()), hint);
+	check_took(got[1], stop, describe(rule, most, "all 0 (a black pixel)"), hint);
+	// Samples 1, 100, 1, 100, ... never converge at a threshold below 0.055 within 512 samples: every
+	// sample, also where max_samples is not a multiple of the batch, or below min_samples.
 	for (uint32_t max_samples : maxima) {
 		REQUIRE(expected_stop(rule, max_samples, alternating_values(1.0f, 100.0f, max_samples)) == max_samples);
 		got = student_sample_pixels(rule, max_samples, {alternating_values(1.0f, 100.0f, max_samples)});
