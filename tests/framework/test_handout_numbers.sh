@@ -213,6 +213,17 @@ quoted handouts/task7_env_light.md 'variances of @ batches' tests/support/sample
 quoted handouts/task7_env_light.md 'at most @ × the light' tests/task7/test_bright_texel.cpp 'bound = @ \* radiance_integral'
 quoted handouts/task7_env_light.md 'luminance · sin θ \(within @\)' tests/task7/test_importance.cpp 'got / expected - 1.0\) <= @\)'
 
+# Task 8: the rule's minimum and batch, where a decision is clear, the render's settings, the
+# grader's significance and number of checks.
+quoted handouts/task8_adaptive.md '\(`min_samples`, @\)' framework/api/adaptive_sampling.h 'min_samples = @;'
+quoted handouts/task8_adaptive.md 'after every batch of @ samples' framework/api/adaptive_sampling.h 'batch = @;'
+quoted handouts/task8_adaptive.md 'differ by more than @ of' tests/task8/adaptive_spec.h 'CLEAR = @;'
+quoted handouts/task8_adaptive.md '\(threshold @, at most' tests/task8/test_adaptive_render.cpp 'THRESHOLD = @f;'
+quoted handouts/task8_adaptive.md 'at most @ samples\)' tests/task8/test_adaptive_render.cpp 'MAX_SAMPLES = @;'
+quoted handouts/task8_adaptive.md 'share a @ chance of failing' grading/judge/judge.h 'GRADER_ALPHA = @;'
+quoted_budget handouts/task8_adaptive.md 'The grader.s @ statistical checks' tests/task8
+quoted_budget handouts/task8_adaptive.md '0\.99\^\(1/@\)' tests/task8
+
 if [ "$failures" -gt 0 ]; then
 	echo "handout numbers: $failures of the numbers the handouts quote differ from the code (or were not found)" >&2
 	exit 1
