@@ -2,7 +2,9 @@
 // Cornell box by default, max depth 100, 2 threads) at the same spp ladder, interleaved, each as the
 // command a user runs; relMSE against one reference of each renderer (two independent halves, whose
 // difference estimates the reference's own noise); time to relMSE 1e-3 from the command's start and
-// from the render time alone. `./lab bench cycles --help`; bench/README.md.
+// from the render time alone; and both again with their own adaptive sampling, over a ladder of
+// thresholds, with the bias adaptive sampling leaves in the image's mean. `./lab bench cycles --help`;
+// bench/README.md.
 #include "bench_timing.h"
 #include "bench_usage.h"
 #include "convergence_metrics.h"
@@ -35,11 +37,18 @@ struct Options {
 	uint32_t repeats = 3, reference_spp = 4096, threads = 2, max_depth = 100;
 	std::string out = "bench/results", cache = LAB_BENCH_BINARY_DIR "/cycles_cache";
 	std::vector<std::string> cycles_options; // passed on to render_in_cycles.py, e.g. --light-as-mesh
+	// Adaptive sampling, each renderer's own: ours --adaptive T (a pixel's relative 95 % half-width),
+	// Cycles' noise threshold; at most adaptive_spp samples a pixel (0: 4 x the ladder's largest).
+	std::vector<double> ours_thresholds{0.25, 0.177, 0.125, 0.088, 0.0625};
+	std::vector<double> cycles_thresholds{0.16, 0.08, 0.04, 0.02, 0.01};
+	uint32_t adaptive_spp = 0;
+	bool adaptive = true;
 };
 
 const Bench_Usage USAGE{"cycles_bench",
 	"usage: cycles_bench [SCENE] [--spp-ladder N,N,...] [--repeats N] [--reference-spp N] [--max-depth D]\n"
 	"                    [--threads T] [--cycles-option OPTION]... [--out DIR]\n"
+	"                    [--adaptive-ladder T,T,...] [--cycles-adaptive-ladder T,T,...] [--adaptive-spp N] [--no-adaptive]\n"
 	"\n"
 	"Renders SCENE (default scenes/cornell_box.json; its film size) with the lab's reference renderer and with\n"
 	"Blender Cycles (bench/cycles/render_in_cycles.py: matched settings), at max depth D (default 100; 0: the\n"
@@ -51,13 +60,39 @@ const Bench_Usage USAGE{"cycles_bench",
 	"subtracted. Prints and writes DIR/cycles_time_to_error.{md,csv,svg} (default DIR: bench/results):\n"
 	"time to relMSE 1e-3 for both renderers, the efficiency 1 / (relMSE * seconds), their ratio, and the\n"
 	"load average before and after. --cycles-option OPTION: pass OPTION on to render_in_cycles.py (e.g.\n"
-	"--light-as-mesh: the Cornell box's light as a mesh light, as before issue 26's export fixes).\n"};
+	"--light-as-mesh: the Cornell box's light as a mesh light, as before issue 26's export fixes).\n"
+	"Then both again with their own adaptive sampling, at most --adaptive-spp samples a pixel (default 4 x the\n"
+	"ladder's largest), over a ladder of thresholds: ours --adaptive T (default 0.25,0.177,0.125,0.088,0.0625),\n"
+	"Cycles' noise threshold (default 0.16,0.08,0.04,0.02,0.01); time to relMSE 1e-3 along each, and the\n"
+	"bias of the image's mean against the renderer's own reference. --no-adaptive: the uniform renders only.\n"};
+
+std::vector<double> threshold_ladder(const std::string& option, const std::string& value) {
+	std::vector<double> ladder;
+	for (size_t start = 0; start <= value.size();) {
+		size_t comma = std::min(value.find(',', start), value.size());
+		std::string text = value.substr(start, comma - start);
+		char* end = nullptr;
+		double t = std::strtod(text.c_str(), &end);
+		if (text.empty() || *end != '\0' || !(t > 0.0 && t <= 1.0)) {
+			USAGE.error(option + " takes thresholds in (0, 1] separated by commas, e.g. 0.25,0.125");
+		}
+		ladder.push_back(t);
+		start = comma + 1;
+	}
+	std::sort(ladder.rbegin(), ladder.rend()); // the loosest first: fewest samples
+	if (ladder.size() < 2) USAGE.error(option + " needs two thresholds or more");
+	return ladder;
+}
 
 Options parse(int argc, char** argv) {
 	Options o;
 	for (int i = 1; i < argc; i++) {
 		std::string arg = argv[i];
 		USAGE.help_if_asked(arg);
+		if (arg == "--no-adaptive") {
+			o.adaptive = false;
+			continue;
+		}
 		if (arg.rfind("--", 0) != 0) {
 			o.scene = arg;
 			continue;
@@ -69,6 +104,9 @@ Options parse(int argc, char** argv) {
 		else if (arg == "--threads") o.threads = USAGE.whole_number(arg, value, 1);
 		else if (arg == "--out") o.out = value;
 		else if (arg == "--cycles-option") o.cycles_options.push_back(value);
+		else if (arg == "--adaptive-ladder") o.ours_thresholds = threshold_ladder(arg, value);
+		else if (arg == "--cycles-adaptive-ladder") o.cycles_thresholds = threshold_ladder(arg, value);
+		else if (arg == "--adaptive-spp") o.adaptive_spp = USAGE.whole_number(arg, value, 16);
 		else if (arg == "--spp-ladder") {
 			o.ladder.clear();
 			for (size_t start = 0; start <= value.size();) {
@@ -81,6 +119,10 @@ Options parse(int argc, char** argv) {
 		} else USAGE.error("unknown option '" + arg + "'");
 	}
 	if (!std::filesystem::is_regular_file(o.scene)) USAGE.error("no such scene file: " + o.scene);
+	if (o.ours_thresholds.size() != o.cycles_thresholds.size()) {
+		USAGE.error("--adaptive-ladder and --cycles-adaptive-ladder need as many thresholds each");
+	}
+	if (o.adaptive_spp == 0) o.adaptive_spp = 4 * o.ladder.back();
 	return o;
 }
 
@@ -120,14 +162,29 @@ Noisy_Image reference(Renderer renderer, const Options& o, const std::string& wo
 
 // ---- One renderer's series ----------------------------------------------------------------------
 
+// A series of runs: one renderer, uniform (a ladder of spp) or adaptive (a ladder of thresholds at
+// Options::adaptive_spp).
+struct Series {
+	Renderer renderer;
+	bool adaptive;
+};
+const Series SERIES[] = {{Renderer::lab, false}, {Renderer::cycles, false}, {Renderer::lab, true}, {Renderer::cycles, true}};
+
+std::string series_name(const Series& series) {
+	return std::string(renderer_name(series.renderer)) + (series.adaptive ? ", adaptive" : "");
+}
+
 struct Run_Result {
-	uint32_t spp;
-	double command_seconds, render_seconds;
-	double rel_mse[2]; // against our reference, against Cycles'
+	size_t step; // in the series' ladder
+	double command_seconds, render_seconds, mean_spp;
+	double rel_mse[2];         // against our reference, against Cycles'
+	double mean_difference[2]; // the image's mean against the reference's, relative
 };
 
 struct Curve {
-	std::vector<double> spp, command_seconds, render_seconds, rel_mse; // per spp: medians of times, mean relMSE
+	std::vector<double> x; // per step: spp (uniform) or threshold (adaptive)
+	std::vector<double> command_seconds, render_seconds, rel_mse, mean_spp; // medians of times and spp, mean relMSE
+	std::vector<double> bias, bias_error; // the image's mean against the reference's: mean over the repeats, its standard error
 	double slope = 0, spp_to_target = 0, command_to_target = 0, render_to_target = 0, efficiency = 0, ms_per_spp = 0;
 };
 
@@ -157,31 +214,46 @@ double linear_fit_at(const std::vector<double>& x, const std::vector<double>& y,
 	return mean_y + covariance / spread * (at - mean_x);
 }
 
-// `against`: 0 our reference, 1 Cycles'; `noise`: that reference's share of every relMSE.
-Curve fit(const std::vector<Run_Result>& runs, const std::vector<uint32_t>& ladder, int against, double noise) {
+// `against`: 0 our reference, 1 Cycles'; `noise`: that reference's share of every relMSE. A uniform
+// series reaches the target along spp (relMSE ~ 1/spp, times a fixed cost plus a cost per sample); an
+// adaptive one along its thresholds, where neither law holds: its time to the target is where the
+// line of log relMSE on log seconds reaches it.
+Curve fit(const std::vector<Run_Result>& runs, const std::vector<double>& ladder, bool adaptive, int against, double noise) {
 	Curve c;
-	std::vector<double> efficiency, ms;
-	for (uint32_t spp : ladder) {
-		std::vector<double> command, render, error;
+	std::vector<double> efficiency;
+	for (size_t step = 0; step < ladder.size(); step++) {
+		std::vector<double> command, render, error, spp, difference;
 		for (const Run_Result& r : runs) {
-			if (r.spp != spp) continue;
+			if (r.step != step) continue;
 			command.push_back(r.command_seconds);
 			render.push_back(r.render_seconds);
 			error.push_back(r.rel_mse[against]);
+			spp.push_back(r.mean_spp);
+			difference.push_back(r.mean_difference[against]);
 		}
-		c.spp.push_back(spp);
+		c.x.push_back(ladder[step]);
 		c.command_seconds.push_back(median(command));
 		c.render_seconds.push_back(median(render));
 		c.rel_mse.push_back(std::max(mean(error) - noise, 1e-12));
+		c.mean_spp.push_back(adaptive ? median(spp) : ladder[step]);
+		double m = mean(difference), spread = 0.0;
+		for (double d : difference) spread += (d - m) * (d - m);
+		c.bias.push_back(m);
+		c.bias_error.push_back(difference.size() > 1 ? std::sqrt(spread / double(difference.size() - 1) / double(difference.size())) : 0.0);
 		efficiency.push_back(1.0 / (c.rel_mse.back() * c.render_seconds.back()));
-		ms.push_back(1000.0 * c.render_seconds.back() / spp);
 	}
-	c.slope = log_log_slope(c.spp, c.rel_mse);
-	c.spp_to_target = fitted_x_at(c.spp, c.rel_mse, TARGET_REL_MSE);
-	c.command_to_target = linear_fit_at(c.spp, c.command_seconds, c.spp_to_target);
-	c.render_to_target = linear_fit_at(c.spp, c.render_seconds, c.spp_to_target);
 	c.efficiency = median(efficiency);
-	c.ms_per_spp = ms.back(); // at the largest spp, where the fixed costs weigh least
+	if (adaptive) {
+		c.slope = log_log_slope(c.render_seconds, c.rel_mse);
+		c.render_to_target = fitted_x_at(c.render_seconds, c.rel_mse, TARGET_REL_MSE);
+		c.command_to_target = fitted_x_at(c.command_seconds, c.rel_mse, TARGET_REL_MSE);
+		return c;
+	}
+	c.slope = log_log_slope(c.x, c.rel_mse);
+	c.spp_to_target = fitted_x_at(c.x, c.rel_mse, TARGET_REL_MSE);
+	c.command_to_target = linear_fit_at(c.x, c.command_seconds, c.spp_to_target);
+	c.render_to_target = linear_fit_at(c.x, c.render_seconds, c.spp_to_target);
+	c.ms_per_spp = 1000.0 * c.render_seconds.back() / c.x.back(); // at the largest spp, where the fixed costs weigh least
 	return c;
 }
 
@@ -197,6 +269,19 @@ std::string general(double value) {
 	return text;
 }
 
+// The mean of an image's pixel channels.
+double image_mean(const HDR_Image& image) {
+	double sum = 0.0;
+	for (const Spectrum& p : image.pixels) sum += double(p.r) + p.g + p.b;
+	return sum / (3.0 * double(image.pixels.size()));
+}
+
+std::string joined(const std::vector<double>& values, const std::function<std::string(double)>& show) {
+	std::string text;
+	for (size_t i = 0; i < values.size(); i++) text += (i ? " / " : "") + show(values[i]);
+	return text;
+}
+
 int run(const Options& o) {
 	std::string work_dir = std::filesystem::temp_directory_path() / ("lab_cycles_bench_" + std::to_string(getpid()));
 	std::filesystem::create_directories(work_dir);
@@ -207,40 +292,71 @@ int run(const Options& o) {
 	std::fflush(stdout);
 	Noisy_Image references[2] = {reference(Renderer::lab, o, work_dir), reference(Renderer::cycles, o, work_dir)};
 	double noise[2] = {noise_rel_mse(references[0], references[0].mean), noise_rel_mse(references[1], references[1].mean)};
+	double reference_means[2] = {image_mean(references[0].mean), image_mean(references[1].mean)};
 	double references_apart = rel_mse(references[1].mean, references[0].mean);
 	std::printf("the references' own noise adds %.3g (ours) and %.3g (Cycles') to every relMSE; subtracted\n"
 	            "the two references differ by relMSE %.3g (their noise alone: %.3g)\n",
 	            noise[0], noise[1], references_apart, noise[0] + noise[1]);
 
+	// The ladders: spp (uniform), thresholds (adaptive, ours and Cycles' step by step).
+	std::vector<double> spp_ladder(o.ladder.begin(), o.ladder.end());
+	auto ladder_of = [&](const Series& series) -> const std::vector<double>& {
+		if (!series.adaptive) return spp_ladder;
+		return series.renderer == Renderer::lab ? o.ours_thresholds : o.cycles_thresholds;
+	};
+	auto request_for = [&](const Series& series, size_t step, uint64_t seed) {
+		Render_Request request{o.scene, o.ladder[std::min(step, o.ladder.size() - 1)], seed, o.threads, o.max_depth, {},
+		                       o.cycles_options, {}};
+		if (!series.adaptive) return request;
+		request.spp = o.adaptive_spp;
+		std::string threshold = general(ladder_of(series)[step]);
+		if (series.renderer == Renderer::lab) request.lab_options = {"--adaptive", threshold};
+		else request.cycles_options.insert(request.cycles_options.end(), {"--adaptive-threshold", threshold});
+		return request;
+	};
+
+	// A job: one step of the uniform or the adaptive ladders, one seed; both renderers render it, taking turns.
 	struct Job {
-		uint32_t spp;
+		bool adaptive;
+		size_t step;
 		uint64_t seed;
 	};
 	std::vector<Job> jobs;
 	uint64_t seed = 1;
-	for (uint32_t spp : o.ladder)
-		for (uint32_t i = 0; i < o.repeats; i++) jobs.push_back({spp, seed++});
+	for (bool adaptive : {false, true}) {
+		if (adaptive && !o.adaptive) continue;
+		size_t steps = adaptive ? o.ours_thresholds.size() : o.ladder.size();
+		for (size_t step = 0; step < steps; step++)
+			for (uint32_t i = 0; i < o.repeats; i++) jobs.push_back({adaptive, step, seed++});
+	}
 	std::shuffle(jobs.begin(), jobs.end(), std::mt19937(12345));
 
 	std::filesystem::create_directories(o.out);
 	std::string csv_path = o.out + "/cycles_time_to_error.csv";
 	std::ofstream csv(csv_path);
-	csv << "renderer,spp,seed,command_seconds,render_seconds,relmse_vs_ours,relmse_vs_cycles\n";
-	std::vector<Run_Result> results[2];
+	csv << "renderer,adaptive,spp,threshold,seed,command_seconds,render_seconds,mean_spp,relmse_vs_ours,relmse_vs_cycles,"
+	       "mean_difference_vs_own\n";
+	std::vector<Run_Result> results[4];
 	std::string load_ladder = load_average();
 	std::printf("rendering %zu images per renderer, taking turns (load average %s)...", jobs.size(), load_ladder.c_str());
 	std::fflush(stdout);
 	auto start = std::chrono::steady_clock::now();
 	for (size_t j = 0; j < jobs.size(); j++) {
 		for (size_t turn = 0; turn < 2; turn++) {
-			size_t k = (j + turn) % 2; // who goes first alternates
-			Render_Request request{o.scene, jobs[j].spp, jobs[j].seed, o.threads, o.max_depth, {}, o.cycles_options, {}};
-			Renderer_Run run = run_renderer(RENDERERS[k], request, work_dir);
-			Run_Result r{jobs[j].spp, run.command_seconds, run.render_seconds,
-			             {rel_mse(run.image, references[0].mean), rel_mse(run.image, references[1].mean)}};
+			size_t k = (j + turn) % 2 + (jobs[j].adaptive ? 2 : 0); // who goes first alternates
+			const Series& series = SERIES[k];
+			Render_Request request = request_for(series, jobs[j].step, jobs[j].seed);
+			Renderer_Run run = run_renderer(series.renderer, request, work_dir);
+			double mean = image_mean(run.image);
+			Run_Result r{jobs[j].step, run.command_seconds, run.render_seconds, run.mean_spp,
+			             {rel_mse(run.image, references[0].mean), rel_mse(run.image, references[1].mean)},
+			             {mean / reference_means[0] - 1.0, mean / reference_means[1] - 1.0}};
 			results[k].push_back(r);
-			csv << renderer_name(RENDERERS[k]) << "," << r.spp << "," << jobs[j].seed << "," << r.command_seconds << ","
-			    << r.render_seconds << "," << r.rel_mse[0] << "," << r.rel_mse[1] << "\n";
+			int own = series.renderer == Renderer::lab ? 0 : 1;
+			csv << renderer_name(series.renderer) << "," << series.adaptive << "," << request.spp << ","
+			    << (series.adaptive ? ladder_of(series)[jobs[j].step] : 0.0) << "," << jobs[j].seed << ","
+			    << r.command_seconds << "," << r.render_seconds << "," << r.mean_spp << "," << r.rel_mse[0] << ","
+			    << r.rel_mse[1] << "," << r.mean_difference[own] << "\n";
 		}
 	}
 	std::string load_after = load_average();
@@ -249,9 +365,10 @@ int run(const Options& o) {
 	std::filesystem::remove_all(work_dir);
 
 	// Against Cycles' reference (the independent anchor), and against ours beside it.
-	Curve curves[2][2]; // [renderer][against]
-	for (int k = 0; k < 2; k++)
-		for (int a = 0; a < 2; a++) curves[k][a] = fit(results[k], o.ladder, a, noise[a]);
+	size_t series_count = o.adaptive ? 4 : 2;
+	Curve curves[4][2]; // [series][against]
+	for (size_t k = 0; k < series_count; k++)
+		for (int a = 0; a < 2; a++) curves[k][a] = fit(results[k], ladder_of(SERIES[k]), SERIES[k].adaptive, a, noise[a]);
 
 	std::string table, joined_options;
 	for (const std::string& option : o.cycles_options) joined_options += " " + option;
@@ -267,16 +384,12 @@ int run(const Options& o) {
 	for (int a : {1, 0})
 		for (int k = 0; k < 2; k++) {
 			const Curve& c = curves[k][a];
-			std::string errors, command, render;
-			for (size_t i = 0; i < c.spp.size(); i++) {
-				errors += (i ? " / " : "") + general(c.rel_mse[i]);
-				command += (i ? " / " : "") + fixed(c.command_seconds[i], 2);
-				render += (i ? " / " : "") + fixed(c.render_seconds[i], 2);
-			}
-			table += std::string("| ") + renderer_name(RENDERERS[k]) + " | " + (a ? "Cycles'" : "ours") + " | " + errors +
-			         " | " + fixed(c.slope, 2) + " | " + command + " | " + render + " | " + fixed(c.ms_per_spp, 1) +
-			         " | " + fixed(c.spp_to_target, 0) + " | " + fixed(c.command_to_target, 2) + " s | " + fixed(c.render_to_target, 2) + " s | " +
-			         fixed(c.efficiency, 0) + " |\n";
+			table += std::string("| ") + renderer_name(SERIES[k].renderer) + " | " + (a ? "Cycles'" : "ours") + " | " +
+			         joined(c.rel_mse, general) + " | " + fixed(c.slope, 2) + " | " +
+			         joined(c.command_seconds, [](double v) { return fixed(v, 2); }) + " | " +
+			         joined(c.render_seconds, [](double v) { return fixed(v, 2); }) + " | " + fixed(c.ms_per_spp, 1) +
+			         " | " + fixed(c.spp_to_target, 0) + " | " + fixed(c.command_to_target, 2) + " s | " +
+			         fixed(c.render_to_target, 2) + " s | " + fixed(c.efficiency, 0) + " |\n";
 		}
 	const Curve &ours = curves[0][1], &cycles = curves[1][1];
 	table += "\nAgainst Cycles' reference: ours reaches relMSE 1e-3 " +
@@ -290,6 +403,42 @@ int run(const Options& o) {
 	         "(ours: rendering; Cycles: the render call, scene sync and BVH included); spp to 1e-3: where the line fitted to log "
 	         "relMSE on log spp reaches 1e-3; s to 1e-3: the line fitted to seconds on spp (a fixed cost plus a cost "
 	         "per sample) at that spp; ms per spp: render time / spp at the largest spp; efficiency: 1 / (relMSE x render seconds), median over the ladder.)\n";
+	if (o.adaptive) {
+		table += "\nAdaptive sampling, each renderer's own, at most " + std::to_string(o.adaptive_spp) +
+		         " samples a pixel, over a ladder of thresholds (ours: --adaptive, the relative 95 % half-width of a "
+		         "pixel's mean; Cycles: its noise threshold, minimum samples automatic). relMSE against Cycles' "
+		         "reference; bias: the image's mean against the renderer's own reference, relative, mean over the " +
+		         std::to_string(o.repeats) + " renders ± its standard error.\n\n"
+		         "| renderer | thresholds | mean spp | relMSE | command s | render s | slope (on render s) | "
+		         "s to 1e-3 (command) | s to 1e-3 (render) | efficiency (render) | bias ± standard error |\n"
+		         "|---|---|---|---|---|---|---|---|---|---|---|\n";
+		for (int k = 2; k < 4; k++) {
+			const Curve& c = curves[k][1];
+			const Curve& own = curves[k][SERIES[k].renderer == Renderer::lab ? 0 : 1];
+			std::string bias;
+			for (size_t i = 0; i < own.bias.size(); i++) {
+				bias += (i ? " / " : "") + fmt("%+.2e ± %.1e", own.bias[i], own.bias_error[i]);
+			}
+			table += "| " + series_name(SERIES[k]) + " | " + joined(c.x, general) + " | " +
+			         (SERIES[k].renderer == Renderer::lab ? joined(c.mean_spp, [](double v) { return fixed(v, 0); })
+			                                               : std::string("not reported")) +
+			         " | " + joined(c.rel_mse, general) + " | " +
+			         joined(c.command_seconds, [](double v) { return fixed(v, 2); }) + " | " +
+			         joined(c.render_seconds, [](double v) { return fixed(v, 2); }) + " | " + fixed(c.slope, 2) + " | " +
+			         fixed(c.command_to_target, 2) + " s | " + fixed(c.render_to_target, 2) + " s | " +
+			         fixed(c.efficiency, 0) + " | " + bias + " |\n";
+		}
+		const Curve &ours_adaptive = curves[2][1], &cycles_adaptive = curves[3][1];
+		table += "\nTime to relMSE 1e-3 against Cycles' reference, render time (command): ours uniform " +
+		         fixed(ours.render_to_target, 2) + " s (" + fixed(ours.command_to_target, 2) + " s), ours adaptive " +
+		         fixed(ours_adaptive.render_to_target, 2) + " s (" + fixed(ours_adaptive.command_to_target, 2) +
+		         " s); Cycles uniform " + fixed(cycles.render_to_target, 2) + " s (" + fixed(cycles.command_to_target, 2) +
+		         " s), Cycles adaptive " + fixed(cycles_adaptive.render_to_target, 2) + " s (" +
+		         fixed(cycles_adaptive.command_to_target, 2) + " s). Ours adaptive against Cycles adaptive: " +
+		         fixed(ours_adaptive.render_to_target / cycles_adaptive.render_to_target, 2) + " of its render time, " +
+		         fixed(ours_adaptive.command_to_target / cycles_adaptive.command_to_target, 2) +
+		         " of its time from the command's start.\n";
+	}
 	std::printf("\n%s", table.c_str());
 	std::ofstream(o.out + "/cycles_time_to_error.md") << table;
 
@@ -306,9 +455,9 @@ int run(const Options& o) {
 		double cycles_t = timing ? cycles.command_to_target : cycles.render_to_target;
 		panel.headline = "1e-3: ours " + fixed(ours_t, 2) + " s, Cycles " + fixed(cycles_t, 2) + " s (" +
 		                 fixed(cycles_t / ours_t, 2) + "x)";
-		for (int k = 0; k < 2; k++) {
+		for (size_t k = 0; k < series_count; k++) {
 			const Curve& c = curves[k][1];
-			panel.series.push_back({renderer_name(RENDERERS[k]), timing ? c.command_seconds : c.render_seconds, c.rel_mse, {}});
+			panel.series.push_back({series_name(SERIES[k]), timing ? c.command_seconds : c.render_seconds, c.rel_mse, {}});
 		}
 		plot.panels.push_back(panel);
 	}

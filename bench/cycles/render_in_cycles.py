@@ -490,6 +490,9 @@ def main():
 	                    help=f"width of Cycles' importance map of an image environment (default {WORLD_MAP_RESOLUTION})")
 	parser.add_argument("--no-light-sampling", action="store_true",
 	                    help="emissive meshes not sampled as lights: Cycles finds them by BSDF sampling alone")
+	parser.add_argument("--adaptive-threshold", type=float, metavar="T",
+	                    help="Cycles' adaptive sampling on, at noise threshold T (minimum samples: Cycles' automatic "
+	                         "choice); --spp is then the most a pixel takes")
 	args = parser.parse_args(sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else [])
 
 	start = time.perf_counter()
@@ -507,6 +510,10 @@ def main():
 	configure_render(scene, width, height, args.spp or film.get("samples", 16),
 	                 film.get("seed", 0) if args.seed is None else args.seed,
 	                 film.get("max_depth", 8) if args.max_depth is None else args.max_depth, args.threads)
+	if args.adaptive_threshold is not None:
+		scene.cycles.use_adaptive_sampling = True
+		scene.cycles.adaptive_threshold = args.adaptive_threshold
+		scene.cycles.adaptive_min_samples = 0 # automatic
 	for group in args.cycles_default:
 		for name in CYCLES_DEFAULT_GROUPS[group]:
 			setattr(scene.cycles, name, scene.cycles.bl_rna.properties[name].default)

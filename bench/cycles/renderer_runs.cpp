@@ -89,6 +89,10 @@ Renderer_Run run_renderer(Renderer renderer, const Render_Request& request, cons
 	run.render_seconds = reported_seconds(log, renderer == Renderer::lab ? "rendering " : ", render ");
 	if (run.render_seconds < 0)
 		throw std::runtime_error(shown + "did not report its render time; its output: " + log_path);
+	// Ours with --adaptive: "adaptive sampling (threshold T): X samples per pixel on average".
+	size_t average = log.rfind(" samples per pixel on average");
+	size_t number = average == std::string::npos ? std::string::npos : log.rfind(' ', average - 1);
+	if (number != std::string::npos) run.mean_spp = std::strtod(log.c_str() + number + 1, nullptr);
 	run.image = read_image(image);
 	return run;
 }

@@ -27,6 +27,7 @@ struct Renderer_Run {
 	HDR_Image image;
 	double command_seconds = 0.0; // from starting the command to its exit (startup, loading, render, writing)
 	double render_seconds = 0.0;  // what the renderer reports: ours "rendering", Cycles' the render call
+	double mean_spp = 0.0;        // ours with --adaptive: the samples a pixel took on average (0: not reported)
 };
 
 // Runs the renderer; `work_dir` holds its image and log. Throws std::runtime_error with the end of
