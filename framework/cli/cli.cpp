@@ -144,12 +144,13 @@ void render_and_write(const Scene& scene, const Cli_Options& options, Run_Times 
 // --stream (./lab view): the render in batches of samples, the film written after each batch
 // (film_stream.h) by render_progressively, which keeps every thread rendering in between; batches
 // of about STREAM_BATCH_SECONDS, so that the page updates several times a second. The film after N
-// samples is render()'s with N, bit for bit.
+// samples is render()'s with N, bit for bit; with --adaptive, each pixel stops as render()'s does.
 void stream(const Scene& scene, const Cli_Options& options, std::ostream& out) {
 	constexpr double STREAM_BATCH_SECONDS = 0.25;
 	Pathtracer pathtracer(scene, scene.settings, options.view, estimator_choice(options));
 	Progressive_Options progressive;
 	progressive.render.threads = options.threads;
+	progressive.render.adaptive.threshold = options.adaptive;
 	progressive.samples = pathtracer.settings.samples;
 	progressive.batch_seconds = STREAM_BATCH_SECONDS;
 	progressive.frame = [&](const Film_Frame& frame) {

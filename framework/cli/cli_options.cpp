@@ -363,9 +363,9 @@ Cli_Options parse_cli_options(const std::vector<std::string>& args) {
 	if (options.stream && (options.passes > 1 || options.follow_pixel)) {
 		throw Input_Error("--stream renders the whole film progressively: it goes with neither --pass nor --follow-pixel");
 	}
-	if (options.adaptive > 0.0f && (options.passes > 1 || options.stream || options.follow_pixel)) {
+	if (options.adaptive > 0.0f && (options.passes > 1 || options.follow_pixel)) {
 		throw Input_Error("--adaptive decides each pixel's samples over the whole render: it goes with neither "
-		                  "--pass, --stream nor --follow-pixel");
+		                  "--pass nor --follow-pixel");
 	}
 	if (options.passes > 1 && options.film.empty()) {
 		throw Input_Error("--pass " + std::to_string(options.pass) + "/" + std::to_string(options.passes) +

@@ -83,6 +83,10 @@ std::string encode_exr(const std::string& path, const HDR_Image& image) {
 
 } // namespace
 
+std::array<uint8_t, 3> png_pixel(Spectrum linear) {
+	return {png_channel(linear.r, 1.0f), png_channel(linear.g, 1.0f), png_channel(linear.b, 1.0f)};
+}
+
 void write_png(const std::string& path, const HDR_Image& image, float exposure) {
 	require_pixels(path, image);
 	float scale = std::exp2(exposure);

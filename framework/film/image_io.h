@@ -5,7 +5,12 @@
 // All functions throw Input_Error with the file name on failure.
 #include "hdr_image.h"
 
+#include <array>
+#include <cstdint>
 #include <string>
+
+// A linear colour as a PNG's pixel at exposure 0: 8-bit sRGB (./lab view's samples layer).
+std::array<uint8_t, 3> png_pixel(Spectrum linear);
 
 // exposure in stops: each channel is multiplied by 2^exposure before the sRGB curve.
 void write_png(const std::string& path, const HDR_Image& image, float exposure = 0.0f);

@@ -8,6 +8,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 #include <vector>
 
@@ -121,11 +122,17 @@ private:
 
 void render_progressively(const Pathtracer& pathtracer, const Progressive_Options& options) {
 	const Render_Settings& settings = pathtracer.settings;
+	if (options.render.adaptive.threshold > 0.0f && options.render.adaptive.batch == 0) {
+		throw std::invalid_argument("render_progressively: adaptive sampling in batches of at least one sample");
+	}
 	Film film(settings.width, settings.height);
 	uint32_t threads = options.render.threads ? options.render.threads : std::max(1u, std::thread::hardware_concurrency());
 	std::vector<Tile> tiles = make_tiles(settings.width, settings.height, tile_size(settings, options.render, threads));
 	threads = std::min<uint32_t>(threads, uint32_t(tiles.size()));
 	Batches batches(options, settings.width, settings.height, tiles.size());
+	// Adaptive sampling (render.h): the pixels' sums and stops, carried from batch to batch.
+	std::unique_ptr<Adaptive_Progress> adaptive;
+	if (options.render.adaptive.threshold > 0.0f) adaptive = std::make_unique<Adaptive_Progress>(film.pixels.size());
 	// The batches each tile has finished; a tile's next batch waits for its last (rarely: only when
 	// the thread that had it was descheduled for as long as all the other tiles took).
 	std::vector<std::atomic<size_t>> finished(tiles.size());
@@ -140,7 +147,7 @@ void render_progressively(const Pathtracer& pathtracer, const Progressive_Option
 				if (batches.stop_requested()) return; // (the thread that had it threw)
 				std::this_thread::yield();
 			}
-			render_tile(pathtracer, settings, options.render, tiles[t], batches.first_of(b), end, film);
+			render_tile(pathtracer, settings, options.render, tiles[t], batches.first_of(b), end, film, adaptive.get());
 			batches.copy_tile(b, tiles[t], film);
 			finished[t].store(b + 1, std::memory_order_release);
 			if (!batches.tile_in(b)) return;

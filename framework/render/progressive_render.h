@@ -16,11 +16,13 @@
 #include <functional>
 
 struct Progressive_Options {
-	Render_Options render;          // threads, tile size (pass and progress are not used)
+	// threads, tile size, adaptive sampling (a frame's pixels then have up to frame.samples
+	// samples); pass and progress are not used
+	Render_Options render;
 	uint32_t samples = 0;           // samples per pixel of the last frame
 	double batch_seconds = 0.25;    // the time a batch should take, once the speed is known
 	// Called with each frame in batch order (never two at once): the film with exactly
-	// frame.samples samples in every pixel, frame.seconds after the render began. Returning false
+	// frame.samples samples in every pixel (with adaptive sampling, at most), frame.seconds after the render began. Returning false
 	// stops the render.
 	std::function<bool(const Film_Frame& frame)> frame;
 };

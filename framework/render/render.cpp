@@ -52,7 +52,8 @@ void sample_adaptively(const Adaptive_Sampling& adaptive, uint32_t samples,
 } // namespace
 
 void render_tile(const Pathtracer& pt, const Render_Settings& settings, const Render_Options& options, const Tile& tile,
-                 uint32_t first, uint32_t end, Film& film) {
+                 uint32_t first, uint32_t end, Film& film, Adaptive_Progress* progress) {
+	const Adaptive_Sampling& adaptive = options.adaptive;
 	Sampler sampler = pt.estimator().choice.sampler;
 	for (uint32_t y = tile.y0; y < tile.y1; y++) {
 		for (uint32_t x = tile.x0; x < tile.x1; x++) {
@@ -64,8 +65,16 @@ void render_tile(const Pathtracer& pt, const Render_Settings& settings, const Re
 				pixel.add(sample);
 				return sample;
 			};
-			if (options.adaptive.threshold > 0.0f) {
-				sample_adaptively(options.adaptive, end, take_sample);
+			if (adaptive.threshold > 0.0f && progress) {
+				Luminance_Sums& sums = progress->sums[index];
+				for (uint32_t s = first; s < end && !progress->stopped[index]; s++) {
+					sums.add(take_sample(s));
+					progress->stopped[index] = (s + 1) % adaptive.batch == 0 && adaptive.pixel_converged(sums);
+				}
+				continue;
+			}
+			if (adaptive.threshold > 0.0f) {
+				sample_adaptively(adaptive, end, take_sample);
 				continue;
 			}
 			for (uint32_t s = first_of_pass(first, options); s < end; s += options.passes) take_sample(s);

@@ -20,8 +20,9 @@ struct Render_Options {
 	// sample of the whole render exactly once, each with the generator it has there.
 	uint32_t pass = 1, passes = 1;
 	// With a threshold, each pixel stops once its estimate is that precise (adaptive_sampling.h):
-	// the settings' samples are then the most a pixel takes. A render of every sample at once only
-	// (render(); not with passes, nor progressively).
+	// the settings' samples are then the most a pixel takes. render() takes each pixel's samples at
+	// once (task 8's sample_pixel), render_progressively in batches (progressive_render.h); not in
+	// passes, nor by render_samples.
 	Adaptive_Sampling adaptive;
 };
 

@@ -91,7 +91,7 @@ void Viewer_Session::watch_student_files() {
 }
 
 void Viewer_Session::grade(int task) {
-	if (task < 1 || task > 7) throw Request_Error(400, "task: expected a task number from 1 to 7, got " + std::to_string(task));
+	if (task < 1 || task > 8) throw Request_Error(400, "task: expected a task number from 1 to 8, got " + std::to_string(task));
 	if (config.grade_command.empty()) throw Request_Error(404, "this viewer runs no grader");
 	{
 		std::lock_guard<std::mutex> lock(mutex);

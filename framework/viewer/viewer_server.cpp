@@ -62,6 +62,15 @@ float stops(const httplib::Request& req) {
 	}
 	return value;
 }
+
+// adaptive=T: the threshold of adaptive sampling, 0 for off (Viewer_Session::restart checks its range).
+float adaptive_threshold(const std::string& text) {
+	float value = 0.0f;
+	if (!parse_decimal(text, value)) {
+		throw Request_Error(400, "adaptive: expected 0 (off) or a relative precision from 0.001 to 1, got '" + text + "'");
+	}
+	return value;
+}
 } // namespace
 
 std::string new_token() {
@@ -192,11 +201,12 @@ void Viewer_Server::add_routes() {
 		if (req.has_param("seed")) changes.seed = whole<uint64_t>("seed", req.get_param_value("seed"), 0, UINT64_MAX - 1);
 		if (req.has_param("view")) changes.view = req.get_param_value("view");
 		if (req.has_param("scene")) changes.scene = req.get_param_value("scene");
+		if (req.has_param("adaptive")) changes.adaptive = adaptive_threshold(req.get_param_value("adaptive"));
 		session.restart(changes);
 		send_json(res, session.state());
 	});
 	s.Post("/api/grade", [this](const httplib::Request& req, httplib::Response& res) {
-		int task = whole<int>("task", required(req, "task", "a task number from 1 to 7"), 1, 7);
+		int task = whole<int>("task", required(req, "task", "a task number from 1 to 8"), 1, 8);
 		session.grade(task);
 		res.status = 202;
 		send_json(res, {{"task", task}, {"started", true}});

@@ -1,6 +1,7 @@
 #include "viewer_session.h"
 #include "block_compare.h"
 #include "diagnostics.h"
+#include "heat_ramp.h"
 #include "image_io.h"
 
 #include <algorithm>
@@ -73,7 +74,8 @@ Layer layer_named(const std::string& name) {
 	if (name == "variance") return Layer::variance;
 	if (name == "non_finite") return Layer::non_finite;
 	if (name == "z") return Layer::z;
-	throw Request_Error(400, "layer: expected mean, variance, non_finite or z, got '" + name + "'");
+	if (name == "samples") return Layer::samples;
+	throw Request_Error(400, "layer: expected mean, variance, non_finite, z or samples, got '" + name + "'");
 }
 
 Viewer_Session::Viewer_Session(Viewer_Config config_, Event_Hub& hub_)
@@ -121,6 +123,7 @@ std::vector<std::string> Viewer_Session::renderer_arguments(Side s) const {
 	                              scene, "--spp", std::to_string(config.max_samples), "--view", view,
 	                              "--seed", std::to_string(side_seed)};
 	if (config.threads) args.insert(args.end(), {"--threads", std::to_string(config.threads)});
+	if (adaptive > 0.0f) args.insert(args.end(), {"--adaptive", std::to_string(adaptive)});
 	// Like with like: beside the student's render the reference renders the same estimator, never
 	// another with other noise (its default, next-event estimation, has far lighter tails than task
 	// 4's path tracer, whose pixels at a few hundred samples have rarely met a small light yet: the
@@ -296,6 +299,10 @@ void Viewer_Session::compare_latest() {
 }
 
 void Viewer_Session::restart(const Restart& changes) {
+	if (changes.adaptive && !(*changes.adaptive == 0.0f || (*changes.adaptive >= 0.001f && *changes.adaptive <= 1.0f))) {
+		throw Request_Error(400, "adaptive: expected 0 (off) or a relative precision from 0.001 to 1, got " +
+		                             std::to_string(*changes.adaptive));
+	}
 	if (changes.view && std::find(VIEWS.begin(), VIEWS.end(), *changes.view) == VIEWS.end()) {
 		throw Request_Error(400, "view: expected path, eye, normals, albedo, bvh or direction, got '" + *changes.view + "'");
 	}
@@ -324,6 +331,7 @@ void Viewer_Session::restart(const Restart& changes) {
 		std::lock_guard<std::mutex> lock(mutex);
 		if (changes.seed) seed = *changes.seed;
 		if (changes.view) view = *changes.view;
+		if (changes.adaptive) adaptive = *changes.adaptive;
 		scene = new_scene;
 		paused = false;
 		student_buildable = build_state != "failed" && build_state != "building";
@@ -384,6 +392,7 @@ nlohmann::json Viewer_Session::state_locked() const {
 	                      {"view", view},
 	                      {"views", VIEWS},
 	                      {"seed", seed},
+	                      {"adaptive", adaptive},
 	                      {"paused", paused},
 	                      {"compare", config.compare},
 	                      {"max_samples", config.max_samples},
@@ -424,6 +433,12 @@ Viewer_Session::Image Viewer_Session::image(Side s, Layer layer) const {
 		break;
 	case Layer::z:
 		image.bytes.assign(reinterpret_cast<const char*>(compared->colours.data()), compared->colours.size() * 3);
+		break;
+	case Layer::samples:
+		for (uint32_t i = 0; i < frame->estimate.samples.size(); i++) {
+			float rate = float(frame->estimate.samples[i] + frame->non_finite[i]) / float(std::max(1u, frame->samples));
+			for (uint8_t byte : png_pixel(heat_ramp(rate))) image.bytes.push_back(char(byte));
+		}
 		break;
 	}
 	return image;

@@ -45,7 +45,9 @@ enum class Side { student, reference };
 const char* side_name(Side side);
 Side side_named(const std::string& name); // throws Request_Error
 
-enum class Layer { mean, variance, non_finite, z };
+// samples: each pixel's samples as the heat ramp of samples / the frame's (sRGB, 3 bytes a pixel):
+// with adaptive sampling (task 8), the rate map.
+enum class Layer { mean, variance, non_finite, z, samples };
 Layer layer_named(const std::string& name); // throws Request_Error
 
 class Viewer_Session {
@@ -61,6 +63,7 @@ public:
 		std::optional<uint64_t> seed;
 		std::optional<std::string> view;
 		std::optional<std::string> scene; // a file name in the scene's folder
+		std::optional<float> adaptive;    // the threshold of adaptive sampling (task 8); 0: off
 	};
 	// Throws Request_Error for an unknown view, or a scene that is not a .json file of the folder.
 	void restart(const Restart& changes);
@@ -85,7 +88,7 @@ public:
 	// image, 500 if the renderer fails.
 	std::string follow(Side side, uint32_t x, uint32_t y, uint32_t samples, uint32_t brightest) const;
 
-	// Runs the grader of task 1-7 in the background, its output published line by line; throws
+	// Runs the grader of task 1-8 in the background, its output published line by line; throws
 	// Request_Error(409) while one runs.
 	void grade(int task);
 
@@ -144,6 +147,7 @@ private:
 	std::string scene;
 	std::string view = "path";
 	uint64_t seed;
+	float adaptive = 0.0f; // --adaptive of both renderers; 0: off
 	bool paused = false;
 	// The estimator the reference renders beside the student's (renderer_arguments): task 4's path
 	// tracer, as the student's renderer is, with light sampling only if the student's task 6 samples

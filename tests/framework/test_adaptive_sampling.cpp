@@ -5,6 +5,7 @@
 #include "adaptive_sampling.h"
 #include "cli.h"
 #include "estimator.h"
+#include "progressive_render.h"
 #include "render.h"
 #include "temp_dir.h"
 
@@ -100,7 +101,36 @@ TEST_CASE("adaptive sampling: the same film for any threads and tile order, each
 	}
 }
 
-TEST_CASE("adaptive sampling: not in passes, nor progressively") {
+TEST_CASE("adaptive sampling, progressively (--stream, ./lab view): frame by frame into render()'s film") {
+	Scene scene = lit_sphere(Spectrum{0.5f});
+	Film whole = render_adaptively(scene, 0.05f, 2);
+	Progressive_Options progressive;
+	progressive.render.threads = 2;
+	progressive.render.tile_size = 4;
+	progressive.render.adaptive.threshold = 0.05f;
+	progressive.samples = scene.settings.samples;
+	progressive.batch_seconds = 0.001; // many batches, of sizes that are not multiples of 16
+	size_t frames = 0;
+	Film_Frame last;
+	progressive.frame = [&](const Film_Frame& frame) {
+		frames++;
+		for (size_t i = 0; i < frame.estimate.samples.size(); i++) REQUIRE(frame.estimate.samples[i] <= frame.samples);
+		last = frame;
+		return true;
+	};
+	render_progressively(Pathtracer(scene, scene.settings), progressive);
+	INFO(frames << " frames");
+	CHECK(frames > 3);
+	REQUIRE(last.samples == scene.settings.samples);
+	Film_Frame expected = Film_Frame::from(whole, scene.settings.samples, 0.0);
+	for (size_t i = 0; i < whole.pixels.size(); i++) {
+		CAPTURE(i);
+		CHECK(last.estimate.samples[i] == expected.estimate.samples[i]);
+		CHECK(std::memcmp(&last.estimate.mean.pixels[i], &expected.estimate.mean.pixels[i], sizeof(Spectrum)) == 0);
+	}
+}
+
+TEST_CASE("adaptive sampling: not in passes, nor by render_samples") {
 	Scene scene = lit_sphere(Spectrum{0.5f});
 	Pathtracer pathtracer(scene, scene.settings);
 	Render_Options options;
@@ -132,5 +162,5 @@ TEST_CASE("adaptive sampling: --adaptive says the mean samples a pixel took, --v
 	CHECK(run({"--adaptive", "2"}, out2, err2) == 2);
 	CHECK(err2.str().find("--adaptive: expected a relative precision from 0.001 to 1") != std::string::npos);
 	CHECK(run({"--adaptive", "0.1", "--pass", "1/2", "--film", png + ".exr"}, out2, err2) == 2);
-	CHECK(err2.str().find("--adaptive decides each pixel's samples over the whole render") != std::string::npos);
+	CHECK(err2.str().find("--adaptive decides each pixel's samples over the whole render: it goes with neither --pass nor") != std::string::npos);
 }

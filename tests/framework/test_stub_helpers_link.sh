@@ -3,8 +3,8 @@
 # (label framework): every stub (student/task*.cpp) opens an anonymous namespace for the student's
 # helpers, and a helper written there stays private to its file.
 #   (a) each stub has the anonymous namespace;
-#   (b) the same helper, `int lab_helper()`, put into the anonymous namespace of all seven stubs:
-#       the seven objects link together (ld -r reports a clash of global symbols);
+#   (b) the same helper, `int lab_helper()`, put into the anonymous namespace of all eight stubs:
+#       the eight objects link together (ld -r reports a clash of global symbols);
 #   (c) the check can fail: the helper put before the namespace, at global scope, in two stubs
 #       does not link.
 #
@@ -46,10 +46,10 @@ for stub in "$root"/student/task*.cpp; do
 	compile "$tmp/$name.cpp" "$tmp/$name.o"
 	objects+=("$tmp/$name.o")
 done
-[ ${#objects[@]} -eq 7 ] || fail "expected 7 stubs in student/, found ${#objects[@]}"
+[ ${#objects[@]} -eq 8 ] || fail "expected 8 stubs in student/ (tasks 1-7 and task 8), found ${#objects[@]}"
 ld -r "${objects[@]}" -o "$tmp/all.o" 2>"$tmp/link.log" ||
-	{ cat "$tmp/link.log" >&2; fail "the seven stubs with the same helper in their anonymous namespaces do not link together"; }
-echo "stub helpers link test: the same helper in all seven stubs' anonymous namespaces links"
+	{ cat "$tmp/link.log" >&2; fail "the eight stubs with the same helper in their anonymous namespaces do not link together"; }
+echo "stub helpers link test: the same helper in all eight stubs' anonymous namespaces links"
 
 # The control: at global scope the same helper in two files is a clash, and ld -r says so.
 for name in task1_camera task2_shapes; do

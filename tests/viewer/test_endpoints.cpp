@@ -128,12 +128,12 @@ TEST_CASE("A malformed request gets a 4xx answer that names what was expected", 
 	std::vector<Case> cases{
 		{"GET", "/api/image?side=left&layer=mean", 400, "expected student or reference"},
 		{"GET", "/api/image?side=student", 400, "missing parameter layer"},
-		{"GET", "/api/image?side=student&layer=depth", 400, "expected mean, variance, non_finite or z"},
+		{"GET", "/api/image?side=student&layer=depth", 400, "expected mean, variance, non_finite, z or samples"},
 		{"GET", "/api/path?side=student&x=abc&y=1", 400, "x: expected a whole number"},
 		{"GET", "/api/path?side=student&x=-1&y=1", 400, "x: expected a whole number"},
 		{"GET", "/api/path?side=student&x=32&y=1", 400, "outside the 32 x 32 image"},
 		{"GET", "/api/path?side=student&x=1&y=1&samples=0", 400, "samples: expected a whole number from 1"},
-		{"POST", "/api/grade?task=9", 400, "task: expected a whole number from 1 to 7"},
+		{"POST", "/api/grade?task=9", 400, "task: expected a whole number from 1 to 8"},
 		{"POST", "/api/grade", 400, "missing parameter task"},
 		{"POST", "/api/restart?view=xray", 400, "view: expected path, eye, normals, albedo, bvh or direction"},
 		{"POST", "/api/restart?seed=-1", 400, "seed: expected a whole number"},
@@ -198,6 +198,42 @@ TEST_CASE("The picture after N samples is the renderer's --spp N, bit for bit", 
 	HDR_Image rendered = read_image(exr);
 	REQUIRE(image->body.size() == rendered.pixels.size() * 3 * sizeof(float));
 	CHECK(std::memcmp(image->body.data(), rendered.pixels.data(), image->body.size()) == 0);
+}
+
+TEST_CASE("With adaptive sampling the last picture is the renderer's --adaptive render, and its samples map shows "
+          "where pixels stopped", "[viewer]") {
+	fs::path dir = scratch_folder("adaptive");
+	Viewer_Config config = config_in(dir, 128);
+	config.compare = false;
+	config.seed = 3;
+	Running_Viewer viewer(config);
+	auto bad = viewer.post("/api/restart?adaptive=2");
+	CHECK(bad->status == 400);
+	CHECK_THAT(bad->body, contains_text("adaptive: expected 0 (off) or a relative precision from 0.001 to 1"));
+	REQUIRE(viewer.post("/api/restart?adaptive=0.1")->status == 200);
+	CHECK(viewer.session.state()["adaptive"] == 0.1f);
+	viewer.wait_for_samples("reference", 128);
+	auto image = viewer.get("/api/image?side=reference&layer=mean");
+	REQUIRE(image->status == 200);
+	std::string exr = (dir / "render.exr").string(), out, err;
+	int status = run_program({config.reference_renderer, config.scene, "--spp", "128", "--seed", "3", "--adaptive",
+	                          "0.1", "--exr", exr, "--out", (dir / "render.png").string(), "--quiet"},
+	                         out, err);
+	REQUIRE(status == 0);
+	HDR_Image rendered = read_image(exr);
+	REQUIRE(image->body.size() == rendered.pixels.size() * 3 * sizeof(float));
+	CHECK(std::memcmp(image->body.data(), rendered.pixels.data(), image->body.size()) == 0);
+	// The samples map: the noisiest pixels take all 128 samples (white), the others stop before.
+	auto rate = viewer.get("/api/image?side=reference&layer=samples");
+	REQUIRE(rate->status == 200);
+	REQUIRE(rate->body.size() == 32 * 32 * 3);
+	size_t white = 0;
+	for (size_t i = 0; i < 32 * 32; i++) {
+		const auto* rgb = reinterpret_cast<const uint8_t*>(rate->body.data()) + 3 * i;
+		white += rgb[0] == 255 && rgb[1] == 255 && rgb[2] == 255;
+	}
+	CHECK(white > 0);
+	CHECK(white < 32 * 32);
 }
 
 TEST_CASE("The z-map and the verdict are the graders': a black render fails, too dark", "[viewer]") {

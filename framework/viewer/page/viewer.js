@@ -10,7 +10,7 @@ const $ = (id) => document.getElementById(id);
 // What the page knows; window.labViewer lets a browser test read it.
 const lab = {
 	state: null,
-	images: {},          // side -> {width, height, samples, mean: Float32Array, nonFinite: Uint8Array|null}
+	images: {},          // side -> {width, height, samples, mean: Float32Array, nonFinite: Uint8Array|null, rate: Uint8Array|null}
 	updates: {student: 0, reference: 0}, // pictures drawn per side
 	firstPictureMs: null, // since the page loaded
 	comparison: null,
@@ -67,8 +67,20 @@ function drawFloat(canvas, image, columns = null) {
 	return {context, pixels};
 }
 
+// The samples map (the viewer's samples layer, sRGB bytes): each pixel's samples so far.
+function drawRate(canvas, image) {
+	const {width, height, rate} = image;
+	canvas.width = width;
+	canvas.height = height;
+	const context = canvas.getContext("2d");
+	const pixels = context.createImageData(width, height);
+	for (let i = 0; i < width * height; i++) pixels.data.set([rate[3 * i], rate[3 * i + 1], rate[3 * i + 2], 255], 4 * i);
+	return {context, pixels};
+}
+
 function drawSide(side) {
-	const drawn = drawFloat($(`${side}-canvas`), lab.images[side]);
+	const image = lab.images[side];
+	const drawn = image && image.rate && $("rate-map").checked ? drawRate($(`${side}-canvas`), image) : drawFloat($(`${side}-canvas`), image);
 	if (drawn) drawn.context.putImageData(drawn.pixels, 0, 0);
 	drawWipe();
 	drawPathOverlay();
@@ -105,13 +117,18 @@ async function fetchImage(side) {
 			const mean = new Float32Array(await response.arrayBuffer());
 			const shown = lab.images[side];
 			// (frames come faster than pictures are fetched at first: the latest may be the one shown)
-			if (shown && shown.samples === samples && shown.generation === generation && !$("nan-map").checked) return;
-			let nonFinite = null;
+			const extra = $("nan-map").checked || $("rate-map").checked;
+			if (shown && shown.samples === samples && shown.generation === generation && !extra) return;
+			let nonFinite = null, rate = null;
 			if ($("nan-map").checked) {
 				const nan = await fetch(url("api/image", {side, layer: "non_finite"}));
 				if (nan.ok) nonFinite = new Uint8Array(await nan.arrayBuffer());
 			}
-			lab.images[side] = {width, height, samples, generation, mean, nonFinite};
+			if ($("rate-map").checked) {
+				const samplesMap = await fetch(url("api/image", {side, layer: "samples"}));
+				if (samplesMap.ok) rate = new Uint8Array(await samplesMap.arrayBuffer());
+			}
+			lab.images[side] = {width, height, samples, generation, mean, nonFinite, rate};
 			lab.updates[side]++;
 			if (lab.firstPictureMs === null) lab.firstPictureMs = performance.now();
 			drawSide(side);
@@ -191,6 +208,7 @@ function showState(state) {
 	fill($("view"), state.views, state.view);
 	$("pause").textContent = state.paused ? "resume" : "pause";
 	if (document.activeElement !== $("seed")) $("seed").value = state.seed;
+	if (document.activeElement !== $("adaptive")) $("adaptive").value = state.adaptive;
 	$("pictures").classList.toggle("alone", !state.compare);
 	for (const [side, info] of Object.entries(state.sides)) {
 		$(`${side}-state`).textContent = info.state;
@@ -374,6 +392,10 @@ function wire() {
 	};
 	$("tonemap").onchange = $("exposure").oninput;
 	$("nan-map").onchange = () => { fetchImage("student"); fetchImage("reference"); };
+	$("rate-map").onchange = () => {
+		for (const side of ["student", "reference"]) { drawSide(side); fetchImage(side); }
+	};
+	$("adaptive").onchange = () => restart({adaptive: $("adaptive").value || 0});
 	$("wipe").oninput = drawWipe;
 	$("pause").onclick = async () => showState(await post(lab.state && lab.state.paused ? "api/resume" : "api/pause"));
 	$("restart").onclick = () => restart({seed: $("seed").value});
@@ -389,7 +411,7 @@ function wire() {
 	$("view").onchange = () => restart({view: $("view").value});
 	$("scene").onchange = () => restart({scene: $("scene").value});
 	for (const side of ["student", "reference", "wipe", "z"]) $(`${side}-canvas`).onclick = (e) => followPixel(side, e);
-	for (let task = 1; task <= 7; task++) {
+	for (let task = 1; task <= 8; task++) {
 		const button = document.createElement("button");
 		button.textContent = `task ${task}`;
 		button.onclick = async () => {
