@@ -67,13 +67,16 @@ TEST_CASE("machine code, data run as code and framework functions of its own ear
 		{1, hostile_source("task1_if_data_executes.cpp", out)},
 		{3, reference_as_assembly(3, dir)},
 		{7, hostile_source("task7_defines_framework.cpp", out, {{"@STUB_TASK7@", read_file("student/task7_env_light.cpp")}})},
+		{8, reference_as_assembly(8, dir)},
 	};
 	std::map<int, Grade> grades = grade_submission(dir, files);
 	// The page it would write and run as code is refused: it answers as the stub does.
 	require_nothing_earned(grades[1], "generate_ray");
-	// The compiled reference, handed in as assembly, is refused before it is linked.
-	CHECK_FALSE(grades[3].built);
-	require_nothing_earned(grades[3], "assembly");
+	// The compiled reference, handed in as assembly, is refused before it is linked (task 8's too).
+	for (int task : {3, 8}) {
+		CHECK_FALSE(grades[task].built);
+		require_nothing_earned(grades[task], "assembly");
+	}
 	// Its own render(), RNG::unit() and Film::non_finite() are refused by name.
 	CHECK_FALSE(grades[7].built);
 	for (const char* name : {"render(Pathtracer const&, Render_Options const&)", "RNG::unit()", "Film::non_finite() const",

@@ -1,8 +1,8 @@
 // Task 8, handout §8.4: an adaptive render with the student's stopping rule and batch loop (tasks 1-7
 // the reference's). The grader draws every pixel's samples itself, as the framework draws them (the
 // same generators, in the same order), so it knows where the rule stops each pixel; and it compares
-// the image with the stored reference of the graded scene (a uniform render of 64 times the
-// graders' samples).
+// the image with the reference's adaptive render at another seed, by z-tests whose standard errors
+// come from the stored reference of the graded scene.
 #include "adaptive_spec.h"
 #include "estimator.h"
 #include "graded_images.h"
