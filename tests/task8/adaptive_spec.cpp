@@ -21,12 +21,11 @@ Verdict rule_verdict(const Adaptive_Sampling& rule, uint32_t n, double sum, doub
 	return Verdict{half_width <= bound, std::abs(half_width - bound) > CLEAR * larger};
 }
 
-std::optional<uint32_t> expected_stop_of_luminance(const Adaptive_Sampling& rule, uint32_t max_samples,
-                                                   const std::vector<double>& luminance) {
+std::optional<uint32_t> expected_stop_of(const Adaptive_Sampling& rule, uint32_t max_samples, const Sample_Stream& samples) {
 	double sum = 0.0, sum_of_squares = 0.0;
 	uint32_t n = 0;
 	for (uint32_t s = 0; s < max_samples; s++) {
-		double y = luminance[s];
+		double y = samples(s);
 		if (std::isfinite(y)) n++, sum += y, sum_of_squares += y * y;
 		if ((s + 1) % rule.batch != 0) continue;
 		Verdict verdict = rule_verdict(rule, n, sum, sum_of_squares);
@@ -38,10 +37,9 @@ std::optional<uint32_t> expected_stop_of_luminance(const Adaptive_Sampling& rule
 
 std::optional<uint32_t> expected_stop(const Adaptive_Sampling& rule, uint32_t max_samples,
                                       const std::vector<float>& values) {
-	std::vector<double> luminance;
-	for (float v : values) luminance.push_back(double(::luminance(Spectrum(v))));
-	luminance.resize(std::max<size_t>(luminance.size(), max_samples), 0.0);
-	return expected_stop_of_luminance(rule, max_samples, luminance);
+	return expected_stop_of(rule, max_samples, [&](uint32_t s) {
+		return s < values.size() ? double(luminance(Spectrum(values[s]))) : 0.0;
+	});
 }
 
 protocol::Adaptive_Rule on_wire(const Adaptive_Sampling& rule) {

@@ -5,6 +5,7 @@
 #include "protocol.h"
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -26,13 +27,15 @@ struct Verdict {
 // The rule for n samples with these sums (handout §8.2).
 Verdict rule_verdict(const Adaptive_Sampling& rule, uint32_t n, double sum, double sum_of_squares);
 
-// Where the batch loop of handout §8.3 stops on these sample values (grey samples, luminance y):
-// the count, or nothing where a check on the way was not clear.
+// A pixel's samples, one at a time: the luminance of sample s (NaN for a non-finite sample).
+using Sample_Stream = std::function<double(uint32_t)>;
+
+// Where the batch loop of handout §8.3 stops on these samples: the count, or nothing where a check on
+// the way was not clear. It draws them only up to the stop.
+std::optional<uint32_t> expected_stop_of(const Adaptive_Sampling& rule, uint32_t max_samples, const Sample_Stream& samples);
+// The same for grey sample values (luminance y = luminance(Spectrum(value)); 0 past the end).
 std::optional<uint32_t> expected_stop(const Adaptive_Sampling& rule, uint32_t max_samples,
                                       const std::vector<float>& values);
-// The same for luminance values already computed (a render's samples).
-std::optional<uint32_t> expected_stop_of_luminance(const Adaptive_Sampling& rule, uint32_t max_samples,
-                                                   const std::vector<double>& luminance);
 
 protocol::Adaptive_Rule on_wire(const Adaptive_Sampling& rule);
 
