@@ -1,7 +1,7 @@
 // Hostile: task 8 correct only on the public test cases (the thresholds, minimums, batches and sample
 // counts a student sees in the grader's source), a pixel that never stops everywhere else: a grading
 // seed must catch it. Its honest part: the rule for the two settings the grader renders and samples
-// random pixels with (threshold 0.25 and 0.1, 32 and 16), whose samples the seed changes anyway.
+// random pixels with (threshold 0.3 and 0.1, 32 and 16), whose samples the seed changes anyway.
 #include "adaptive_sampling.h"
 
 #include <algorithm>
@@ -9,7 +9,7 @@
 
 namespace {
 bool public_rule(const Adaptive_Sampling& rule) {
-	const float thresholds[] = {0.08f, 0.0802f, 0.05f, 0.02f, 0.2f, 0.07f, 0.5f, 0.01f, 0.25f, 0.1f};
+	const float thresholds[] = {0.08f, 0.0802f, 0.05f, 0.02f, 0.2f, 0.07f, 0.5f, 0.01f, 0.3f, 0.1f};
 	bool threshold = std::find(std::begin(thresholds), std::end(thresholds), rule.threshold) != std::end(thresholds);
 	bool minimum = rule.min_samples == 32 || rule.min_samples == 64 || rule.min_samples == 20;
 	bool batch = rule.batch == 16 || rule.batch == 10 || rule.batch == 7;
@@ -26,7 +26,8 @@ bool Adaptive_Sampling::pixel_converged(const Luminance_Sums& sums) const {
 }
 
 uint32_t Adaptive_Sampling::sample_pixel(uint32_t max_samples, const std::function<Spectrum(uint32_t)>& take_sample) const {
-	bool public_count = max_samples == 256 || max_samples == 100 || max_samples == 8 || max_samples == 512;
+	bool public_count = max_samples == 256 || max_samples == 100 || max_samples == 8 || max_samples == 512 ||
+	                    max_samples == 128;
 	Luminance_Sums sums;
 	for (uint32_t s = 0; s < max_samples; s++) {
 		sums.add(take_sample(s));
