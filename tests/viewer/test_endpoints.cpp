@@ -180,6 +180,21 @@ TEST_CASE("No path from the browser reaches beyond the scene's folder and the ou
 	CHECK(viewer.session.state()["scenes"] == nlohmann::json::array({"cornell_box.json"}));
 }
 
+namespace {
+// The picture the page got (float32 RGB) is the reference renderer's with these options, bit for bit.
+void check_same_as_renderer(const std::string& picture, const Viewer_Config& config, const fs::path& dir,
+                            const std::vector<std::string>& options) {
+	std::string exr = (dir / "render.exr").string(), out, err;
+	std::vector<std::string> args{config.reference_renderer, config.scene};
+	args.insert(args.end(), options.begin(), options.end());
+	args.insert(args.end(), {"--exr", exr, "--out", (dir / "render.png").string(), "--quiet"});
+	REQUIRE(run_program(args, out, err) == 0);
+	HDR_Image rendered = read_image(exr);
+	REQUIRE(picture.size() == rendered.pixels.size() * 3 * sizeof(float));
+	CHECK(std::memcmp(picture.data(), rendered.pixels.data(), picture.size()) == 0);
+}
+} // namespace
+
 TEST_CASE("The picture after N samples is the renderer's --spp N, bit for bit", "[viewer]") {
 	fs::path dir = scratch_folder("determinism");
 	Viewer_Config config = config_in(dir, 12);
@@ -190,14 +205,7 @@ TEST_CASE("The picture after N samples is the renderer's --spp N, bit for bit", 
 	auto image = viewer.get("/api/image?side=reference&layer=mean");
 	REQUIRE(image->status == 200);
 	CHECK(image->get_header_value("X-Samples") == "12");
-	std::string exr = (dir / "render.exr").string(), out, err;
-	int status = run_program({config.reference_renderer, config.scene, "--spp", "12", "--seed", "5", "--exr", exr,
-	                          "--out", (dir / "render.png").string(), "--quiet"},
-	                         out, err);
-	REQUIRE(status == 0);
-	HDR_Image rendered = read_image(exr);
-	REQUIRE(image->body.size() == rendered.pixels.size() * 3 * sizeof(float));
-	CHECK(std::memcmp(image->body.data(), rendered.pixels.data(), image->body.size()) == 0);
+	check_same_as_renderer(image->body, config, dir, {"--spp", "12", "--seed", "5"});
 }
 
 TEST_CASE("With adaptive sampling the last picture is the renderer's --adaptive render, and its samples map shows "
@@ -215,14 +223,7 @@ TEST_CASE("With adaptive sampling the last picture is the renderer's --adaptive 
 	viewer.wait_for_samples("reference", 128);
 	auto image = viewer.get("/api/image?side=reference&layer=mean");
 	REQUIRE(image->status == 200);
-	std::string exr = (dir / "render.exr").string(), out, err;
-	int status = run_program({config.reference_renderer, config.scene, "--spp", "128", "--seed", "3", "--adaptive",
-	                          "0.1", "--exr", exr, "--out", (dir / "render.png").string(), "--quiet"},
-	                         out, err);
-	REQUIRE(status == 0);
-	HDR_Image rendered = read_image(exr);
-	REQUIRE(image->body.size() == rendered.pixels.size() * 3 * sizeof(float));
-	CHECK(std::memcmp(image->body.data(), rendered.pixels.data(), image->body.size()) == 0);
+	check_same_as_renderer(image->body, config, dir, {"--spp", "128", "--seed", "3", "--adaptive", "0.1"});
 	// The samples map: the noisiest pixels take all 128 samples (white), the others stop before.
 	auto rate = viewer.get("/api/image?side=reference&layer=samples");
 	REQUIRE(rate->status == 200);
