@@ -96,7 +96,7 @@ Image_Test read_image_test(const fs::path& dir, const Json& record) {
 
 Test_Case read_test_case(const fs::path& dir, const Json& record) {
 	Test_Case test_case{record.value("id", ""), record.value("name", "?"), where(record), record.value("passed", false),
-	                    {}, record.value("more_failures", size_t(0)), {}};
+	                    {}, record.value("more_failures", size_t(0)), {}, {}};
 	for (const Json& failure : record.value("failures", Json::array())) {
 		test_case.failures.push_back(read_failure(failure));
 	}

@@ -197,7 +197,7 @@ TEST_CASE("rubric --update: ids kept with their fields, new ids at weight 1, gon
 	Task_Result stubs;
 	stubs.task = lab_tasks().at(0);
 	stubs.expected = {{"t1.a.new", "a new test case"}, {"t1.a.kept", "new title"}, {"t1.a.titled", "named by its title"}};
-	stubs.test_cases = {{"t1.a.new", "a new test case", "x.cpp:1", true, {}, 0, {}}};
+	stubs.test_cases = {{"t1.a.new", "a new test case", "x.cpp:1", true, {}, 0, {}, {}}};
 	Rubric_Update update = update_rubric(file, {stubs});
 
 	nlohmann::json rubric = nlohmann::json::parse(update.text);
