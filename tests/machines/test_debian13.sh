@@ -63,7 +63,7 @@ grade() {
 	grep -q '^sandbox: bubblewrap' "$out/$name.out" || fail "./lab grade $n did not run in bubblewrap: $(grep '^sandbox:' "$out/$name.out")"
 }
 start=$SECONDS
-for n in 1 2 3 4 5 6 7 6-nee; do
+for n in 1 2 3 4 5 6 7 8 6-nee; do
 	file=$(cd "$root/reference" && ls task"${n%%-*}"_*.cpp)
 	grade "grade_${n}_stub" fail "$n"
 	grade "grade_${n}_reference" pass "$n" "$file"
