@@ -46,9 +46,15 @@ protocol::Adaptive_Rule on_wire(const Adaptive_Sampling& rule) {
 	return protocol::Adaptive_Rule{rule.threshold, rule.min_samples, rule.batch};
 }
 
+std::vector<float> alternating_values(float a, float b, uint32_t n) {
+	std::vector<float> values(n);
+	for (uint32_t i = 0; i < n; i++) values[i] = i % 2 ? b : a;
+	return values;
+}
+
 Luminance_Sums alternating(float a, float b, uint32_t n) {
 	Luminance_Sums sums;
-	for (uint32_t i = 0; i < n; i++) sums.add(Spectrum(i % 2 ? b : a));
+	for (float value : alternating_values(a, b, n)) sums.add(Spectrum(value));
 	return sums;
 }
 

@@ -39,7 +39,8 @@ std::optional<uint32_t> expected_stop(const Adaptive_Sampling& rule, uint32_t ma
 
 protocol::Adaptive_Rule on_wire(const Adaptive_Sampling& rule);
 
-// The sums of n samples alternating a, b, a, b, ... (grey), as Luminance_Sums::add makes them.
+// n grey samples alternating a, b, a, b, ..., and their sums as Luminance_Sums::add makes them.
+std::vector<float> alternating_values(float a, float b, uint32_t n);
 Luminance_Sums alternating(float a, float b, uint32_t n);
 
 // The student's pixel_converged for each (rule, sums).

@@ -54,12 +54,6 @@ Adaptive_Sampling rule_with(float threshold, uint32_t min_samples = 32, uint32_t
 	return rule;
 }
 
-std::vector<float> alternating_values(float a, float b, uint32_t n) {
-	std::vector<float> values(n);
-	for (uint32_t i = 0; i < n; i++) values[i] = i % 2 ? b : a;
-	return values;
-}
-
 } // namespace
 
 TEST_CASE("sample_pixel: samples 0, 1, 2, ... in order, each once, at most max_samples, and returns the count",
