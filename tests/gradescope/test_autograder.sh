@@ -85,7 +85,8 @@ grade one_mistake less "$mistake"/task*.cpp
 # What a student holding the release can hand in (tests/security/test_reference_holder.cpp), filled
 # in as the security suite fills it in: the compiled reference of task 3 as assembly, a task 1 that
 # would become another program, a task 6 that names its own integrator as the framework's, a task 7
-# that would be the reference if its compile could see an earlier task's build. Each earns nothing:
+# that would be the reference if its compile could see an earlier task's build, a task 8 right only
+# on its public cases (which the bundle's grading seed changes). Each earns nothing:
 # 0 with the stubs of the other tasks.
 hostile=$out/hostile
 mkdir -p "$hostile"
@@ -99,6 +100,7 @@ fill() { # NAME: tests/security/hostile/NAME with its placeholders filled in
 fill task1_if_exec_works.cpp >"$hostile/task1_camera.cpp"
 fill task6_integrator_named_as_framework.cpp >"$hostile/task6_direct_lighting.cpp"
 fill task7_if_earlier_builds_visible.cpp >"$hostile/task7_env_light.cpp"
+fill task8_public_cases_only.cpp >"$hostile/task8_adaptive.cpp" # under the bundle's seed: the stub's part
 # shellcheck source=/dev/null
 source "$(dirname "$mutants")/grading/kit.env"
 {
@@ -108,3 +110,14 @@ source "$(dirname "$mutants")/grading/kit.env"
 	printf '\n)lab");\n'
 } >"$hostile/task3_bvh.cpp"
 grade reference_holder zero "$hostile"/task*.cpp
+# Task 8 is worth 0 points by default, so its score proves nothing: its closed-form test cases, drawn
+# from the bundle's seed, must have failed.
+python3 - "$system/autograder/results/graded/task8.json" <<'PYTHON' || fail "reference_holder: task 8's public-cases file passed a closed-form test case"
+import json, sys
+closed_forms = ("pixel_converged: a pixel stops once", "pixel_converged: never before min_samples",
+                "sample_pixel: samples 0, 1, 2", "sample_pixel: checks after every batch")
+cases = json.load(open(sys.argv[1]))["test_cases"]
+passed = [c["name"] for c in cases if c["passed"] and c["name"].startswith(closed_forms)]
+print("autograder test: task 8's public-cases file, closed forms passed under the seed:", passed)
+sys.exit(1 if passed or len(cases) != 7 else 0)
+PYTHON

@@ -160,6 +160,28 @@ TEST_CASE("task 4's answers replayed from the shipped reference image or read of
 	}
 }
 
+TEST_CASE("task 8's answers special-cased for the public cases pass none of its closed-form test cases under a "
+          "grading seed",
+          "[security][whole]") {
+	// Task 8's closed forms (the rule, the minimum, the loop's order and its batches) draw their
+	// thresholds, minimums, batches and sample counts from the seed; the file answers right only for
+	// the public ones. Its honest part is the rule for the render's and the random pixels' settings.
+	Grade in_public = grade("task8_public_cases_only.cpp", 8);
+	INFO("in public: " << in_public.messages.substr(0, 1500));
+	CHECK(in_public.passed == in_public.test_cases);
+	Temp_Dir dir;
+	std::string hostile = hostile_source("task8_public_cases_only.cpp", dir.path() / "out");
+	Grade seeded = grade_submission(dir, {{8, hostile}}, "--seed 777")[8];
+	INFO("under a grading seed: " << seeded.messages.substr(0, 1500));
+	CHECK(seeded.built);
+	for (const char* closed_form : {"pixel_converged: a pixel stops once", "pixel_converged: never before min_samples",
+	                                "sample_pixel: samples 0, 1, 2", "sample_pixel: checks after every batch"}) {
+		CAPTURE(closed_form);
+		CHECK(std::none_of(seeded.passed_names.begin(), seeded.passed_names.end(),
+		                   [&](const std::string& name) { return name.rfind(closed_form, 0) == 0; }));
+	}
+}
+
 TEST_CASE("an answer claiming more results than its bytes hold costs the judge no more than its bytes, and one larger "
           "than any answer is refused unread",
           "[security][whole]") {
