@@ -33,6 +33,7 @@ template<bool ANY_HIT> struct Triangle_Leaves {
 	bool exact;
 	uint32_t best = NONE; // closest hit: the closest triangle found so far, hit at t
 	float t = INF_F;
+	float u = 0, v = 0; // and its barycentrics (where the pack is exact, Triangle::hit's)
 
 	// What a node's test fetches ahead for a leaf it finds (the leaves found are then fetched at
 	// once): its first pack, rarely in cache, and for the closest hit the pack's triangles, one of
@@ -70,6 +71,7 @@ template<bool ANY_HIT> struct Triangle_Leaves {
 					if (PACK_IS_EXACT || bvh.primitives[pack.index[lane]].hit(r).hit) return true;
 				} else if (hits.t[lane] <= r.dist_bounds.y) { // (an earlier lane may have come closer)
 					best = pack.index[lane], t = r.dist_bounds.y = hits.t[lane];
+					u = hits.u[lane], v = hits.v[lane];
 				}
 			}
 		}
@@ -181,28 +183,42 @@ template<bool ANY_HIT, typename Leaves> bool traverse(const Wide_BVH& wide, cons
 	return false;
 }
 
-// The closest triangle hit with t in ray.dist_bounds, and that t (NONE and INF_F for a miss).
+// The closest triangle hit with t in ray.dist_bounds, that t and its barycentrics (NONE and INF_F
+// for a miss).
 struct Closest_Triangle {
 	uint32_t primitive;
-	float t;
+	float t, u, v;
 };
 
 Closest_Triangle closest_triangle(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, bool exact) {
 	Triangle_Leaves<false> leaves{bvh, wide, exact};
 	traverse<false>(wide, ray, leaves);
-	return Closest_Triangle{leaves.best, leaves.t};
+	return Closest_Triangle{leaves.best, leaves.t, leaves.u, leaves.v};
 }
 
-// The closest triangle's record (its normal, position): Triangle::hit on the whole ray, so that
-// the result is the lab's test's bit for bit. If it misses (only where the pack rounded otherwise:
-// fused multiply-add), the query starts over with `exact`: every candidate to Triangle::hit, and
-// `best` becomes the triangle it finds. The record is one variable returned all the way, so
-// Triangle::hit writes it where the caller wants it.
-Trace record(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, uint32_t& best) {
-	Trace trace = bvh.primitives[best].hit(ray);
+// The closest triangle's record (hit point, normal), bit for bit Triangle::hit's on the whole ray.
+// Where the pack is exact, its t, u and v are Triangle::hit's, and the record is made from them with
+// Triangle::hit's arithmetic (reference/task2_shapes.cpp: the vertex normals weighted by 1 - u - v, u
+// and v, normalized; the point ray.at(t)), without testing the triangle again. Otherwise Triangle::hit
+// makes it; if that misses (the pack rounded otherwise), the query starts over with `exact`: every
+// candidate to Triangle::hit, and `best` becomes the triangle it finds. The record is one variable
+// returned all the way, so it is written where the caller wants it.
+Trace record(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, Closest_Triangle& best) {
+	const Triangle& triangle = bvh.primitives[best.primitive];
+	if constexpr (PACK_IS_EXACT) {
+		float u = best.u, v = best.v;
+		Trace trace;
+		trace.origin = ray.point;
+		trace.hit = true;
+		trace.distance = best.t;
+		trace.position = ray.at(best.t);
+		trace.normal = glm::normalize((1.0f - u - v) * triangle.v0.normal + u * triangle.v1.normal + v * triangle.v2.normal);
+		return trace;
+	}
+	Trace trace = triangle.hit(ray);
 	if (!trace.hit) {
-		best = closest_triangle(bvh, wide, ray, true).primitive;
-		if (best != NONE) trace = bvh.primitives[best].hit(ray);
+		best = closest_triangle(bvh, wide, ray, true);
+		if (best.primitive != NONE) trace = bvh.primitives[best.primitive].hit(ray);
 	}
 	return trace;
 }
@@ -220,10 +236,9 @@ Trace flat_hit(const BVH<Instance>& objects, const Flat_Meshes& flat, const Ray&
 		if (others.closest.hit) return others.closest;
 	}
 	if (nearest.primitive == NONE) return Trace{};
-	uint32_t best = nearest.primitive;
-	Trace trace = record(flat.triangles, flat.wide, ray, best);
-	if (best == NONE) return Trace{};
-	return objects.primitives[flat.owner[best]].world_record(ray, trace);
+	Trace trace = record(flat.triangles, flat.wide, ray, nearest);
+	if (nearest.primitive == NONE) return Trace{};
+	return objects.primitives[flat.owner[nearest.primitive]].world_record(ray, trace);
 }
 
 bool flat_occluded(const BVH<Instance>& objects, const Flat_Meshes& flat, const Ray& ray) {
@@ -249,8 +264,8 @@ template<typename Primitive> Accelerator<Primitive>::Accelerator(const BVH<Primi
 template<typename Primitive> Trace Accelerator<Primitive>::hit(const BVH<Primitive>& bvh, const Ray& ray) const {
 	if (!wide) return bvh.hit(ray);
 	if constexpr (std::is_same_v<Primitive, Triangle>) {
-		uint32_t best = closest_triangle(bvh, *wide, ray, false).primitive;
-		if (best == NONE) return Trace{};
+		Closest_Triangle best = closest_triangle(bvh, *wide, ray, false);
+		if (best.primitive == NONE) return Trace{};
 		return record(bvh, *wide, ray, best);
 	} else {
 		if (wide->flat) return flat_hit(bvh, *wide->flat, ray);
