@@ -9,6 +9,7 @@
 #include "bench_stats.h"
 #include "bench_timing.h"
 #include "accelerator.h"
+#include "wide_bvh_queries.h"
 #ifdef LAB_HAVE_EMBREE
 #include "embree_bvh.h"
 #endif
@@ -189,8 +190,9 @@ int main(int argc, char** argv) {
 
 	std::printf("\ntask 3's BVH (reference/task3_bvh.cpp): build %.0f ms, %.1f bytes/triangle, SAH cost %.2f, %zu nodes\n",
 	            median(tree_builds) * 1e3, double(bvh_bytes(bvh)) / n, sah_cost(bvh), bvh.nodes.size());
-	std::printf("accelerator (framework/accel/), made from it: %.0f ms more, %.1f bytes/triangle more\n",
-	            (median(builds) - median(tree_builds)) * 1e3, double(accelerator.bytes()) / n);
+	std::printf("accelerator (framework/accel/), made from it: %.0f ms more, %.1f bytes/triangle more; "
+	            "%d lanes per node test (LAB_VECTOR_WIDTH=4 asks for 4)\n",
+	            (median(builds) - median(tree_builds)) * 1e3, double(accelerator.bytes()) / n, chosen_queries().lanes);
 	std::printf("per ray, nodes overlapped up to the closest hit (ideal front-to-back) / triangles in their leaves:\n");
 	for (int s = 0; s < 3; s++) {
 		std::vector<float> hits = results[s][0].results; // occlusion: count the whole segment

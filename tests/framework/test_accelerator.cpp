@@ -44,7 +44,7 @@ TEST_CASE("the accelerator's closest hit records what Triangle::hit records for 
 		INFO("ray " << i << " hits at t = " << got.distance
 		            << ": no triangle's Triangle::hit makes this record (hit point and normal); the accelerator's "
 		               "record must be made with Triangle::hit's arithmetic from the pack's t, u and v "
-		               "(framework/accel/fast/wide_bvh_traversal.cpp, record())");
+		               "(framework/accel/fast/wide_bvh_traversal.h, record())");
 		REQUIRE(recorded_by_triangle_hit);
 	}
 	CHECK(hits > 1000);

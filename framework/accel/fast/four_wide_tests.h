@@ -39,33 +39,36 @@ struct Slab_Ray {
 	bool negative[3];
 };
 
-// Slab test of a wide node's children, four at once: returns a bit per child hit within `bounds`
-// (never an unused slot: its box is empty, but a ray with a NaN direction overlaps every box), and
-// where the ray enters each child's box.
-[[gnu::always_inline]] inline unsigned hit_children(const Wide_Node& node, const Slab_Ray& ray, Vec2 bounds,
-                                                    float (&t_enter)[Wide_Node::WIDTH]) {
-	const float* lo[3] = {node.min_x, node.min_y, node.min_z};
-	const float* hi[3] = {node.max_x, node.max_y, node.max_z};
-	unsigned mask = 0;
-	for (int group = 0; group < Wide_Node::WIDTH; group += 4) { // four children at a time
-		Float4 enter = Float4{} + bounds.x, exit = Float4{} + bounds.y;
-		for (int axis = 0; axis < 3; axis++) {
-			bool negative = ray.negative[axis];
-			Float4 t_near = (load4((negative ? hi[axis] : lo[axis]) + group) - ray.point[axis]) * ray.inv_dir[axis];
-			Float4 t_far = (load4((negative ? lo[axis] : hi[axis]) + group) - ray.point[axis]) * ray.inv_dir[axis];
-			// A NaN (0 * inf, a ray inside a slab's plane) fails the comparison and leaves the
-			// interval unchanged.
-			enter = t_near > enter ? t_near : enter;
-			exit = t_far < exit ? t_far : exit;
+// The node test of the four-wide queries (wide_bvh_traversal.h): the slab test of a wide node's
+// children, four at once.
+struct Four_Lanes {
+	// Returns a bit per child hit within `bounds` (never an unused slot: its box is empty, but a ray
+	// with a NaN direction overlaps every box), and where the ray enters each child's box.
+	[[gnu::always_inline]] static unsigned hit_children(const Wide_Node& node, const Slab_Ray& ray, Vec2 bounds,
+	                                                    float (&t_enter)[Wide_Node::WIDTH]) {
+		const float* lo[3] = {node.min_x, node.min_y, node.min_z};
+		const float* hi[3] = {node.max_x, node.max_y, node.max_z};
+		unsigned mask = 0;
+		for (int group = 0; group < Wide_Node::WIDTH; group += 4) { // four children at a time
+			Float4 enter = Float4{} + bounds.x, exit = Float4{} + bounds.y;
+			for (int axis = 0; axis < 3; axis++) {
+				bool negative = ray.negative[axis];
+				Float4 t_near = (load4((negative ? hi[axis] : lo[axis]) + group) - ray.point[axis]) * ray.inv_dir[axis];
+				Float4 t_far = (load4((negative ? lo[axis] : hi[axis]) + group) - ray.point[axis]) * ray.inv_dir[axis];
+				// A NaN (0 * inf, a ray inside a slab's plane) fails the comparison and leaves the
+				// interval unchanged.
+				enter = t_near > enter ? t_near : enter;
+				exit = t_far < exit ? t_far : exit;
+			}
+			std::memcpy(t_enter + group, &enter, sizeof enter);
+			Int4 first;
+			std::memcpy(&first, node.first + group, sizeof first);
+			Int4 hit = (enter <= exit) & (first != Int4{} + int32_t(Wide_Node::UNUSED_SLOT));
+			mask |= lane_bits(hit) << group;
 		}
-		std::memcpy(t_enter + group, &enter, sizeof enter);
-		Int4 first;
-		std::memcpy(&first, node.first + group, sizeof first);
-		Int4 hit = (enter <= exit) & (first != Int4{} + int32_t(Wide_Node::UNUSED_SLOT));
-		mask |= lane_bits(hit) << group;
+		return mask;
 	}
-	return mask;
-}
+};
 
 // Möller–Trumbore on the four triangles of a pack at once, with Triangle::hit's arithmetic
 // (reference/task2_shapes.cpp: the same products and sums in the same order, one reciprocal of

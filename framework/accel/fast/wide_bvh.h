@@ -36,6 +36,7 @@ struct alignas(32) Triangle_Pack { // 160 bytes, against 4 x 72 for the Triangle
 };
 
 struct Flat_Meshes;
+struct Wide_Queries;
 
 struct Wide_BVH {
 	std::vector<Wide_Node> nodes;          // nodes[0] is the root; empty without primitives
@@ -43,6 +44,8 @@ struct Wide_BVH {
 	// BVH<Instance> only, where the scene allows it (flat_meshes.cpp): its objects as Flat_Meshes,
 	// queried instead of `nodes`.
 	std::shared_ptr<const Flat_Meshes> flat;
+	// The accelerator's: its queries, for the vector width chosen (wide_bvh_queries.h).
+	const Wide_Queries* queries = nullptr;
 };
 
 // The objects of a scene that sit where they were modelled (no transform of their own) and are

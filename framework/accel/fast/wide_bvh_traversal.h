@@ -1,18 +1,23 @@
-// The fast accelerator (api/accelerator.h): the queries of a finished BVH traverse its Wide_BVH
-// (wide_bvh.h). Linked only where tasks 2 and 3 are both the reference (cmake/lab.cmake).
-#include "accelerator.h"
+#pragma once
+// The fast accelerator's queries (wide_bvh_queries.h), written once for any vector width: `Lanes`
+// is the test of a wide node's children (four_wide_tests.h, eight_wide_queries.cpp). Included only
+// by the files that compile them, one per width, each with its own instruction set; everything here
+// is in an unnamed namespace, so that each keeps its own copy (no program links code of one width
+// where it asked for the other).
 #include "four_wide_tests.h"
 #include "instance.h"
 #include "tri_mesh.h"
+#include "wide_bvh_queries.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
-#include <type_traits>
 #include <utility>
-
-using namespace four_wide;
+#include <vector>
 
 namespace {
+
+using namespace four_wide;
 
 constexpr uint32_t NONE = ~0u;
 
@@ -104,7 +109,7 @@ template<bool ANY_HIT> struct Instance_Leaves {
 // finds; the any-hit query returns at the first, and takes the children hit in slot order: any hit
 // will do, so sorting them buys nothing (the answer is the same in any order). Returns whether an
 // any-hit query found a hit.
-template<bool ANY_HIT, typename Leaves> bool traverse(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
+template<bool ANY_HIT, typename Lanes, typename Leaves> bool traverse(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
 	struct Child { // a wide node (count 0) or a leaf's primitives
 		uint32_t first, count;
 		float t_enter;
@@ -129,7 +134,7 @@ template<bool ANY_HIT, typename Leaves> bool traverse(const Wide_BVH& wide, cons
 			const Wide_Node& node = wide.nodes[child.first];
 			constexpr int WIDTH = Wide_Node::WIDTH;
 			float t_enter[WIDTH];
-			unsigned mask = hit_children(node, slab_ray, r.dist_bounds, t_enter);
+			unsigned mask = Lanes::hit_children(node, slab_ray, r.dist_bounds, t_enter);
 			if (mask != 0) {
 				if (top + WIDTH > capacity) { // a deep tree: the stack moves to the heap, twice as large
 					if (stack == local_stack) heap_stack.assign(local_stack, local_stack + top);
@@ -190,9 +195,9 @@ struct Closest_Triangle {
 	float t, u, v;
 };
 
-Closest_Triangle closest_triangle(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, bool exact) {
+template<typename Lanes> Closest_Triangle closest_triangle(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, bool exact) {
 	Triangle_Leaves<false> leaves{bvh, wide, exact};
-	traverse<false>(wide, ray, leaves);
+	traverse<false, Lanes>(wide, ray, leaves);
 	return Closest_Triangle{leaves.best, leaves.t, leaves.u, leaves.v};
 }
 
@@ -203,7 +208,7 @@ Closest_Triangle closest_triangle(const BVH<Triangle>& bvh, const Wide_BVH& wide
 // makes it; if that misses (the pack rounded otherwise), the query starts over with `exact`: every
 // candidate to Triangle::hit, and `best` becomes the triangle it finds. The record is one variable
 // returned all the way, so it is written where the caller wants it.
-Trace record(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, Closest_Triangle& best) {
+template<typename Lanes> Trace record(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, Closest_Triangle& best) {
 	const Triangle& triangle = bvh.primitives[best.primitive];
 	if constexpr (PACK_IS_EXACT) {
 		float u = best.u, v = best.v;
@@ -217,7 +222,7 @@ Trace record(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, Clo
 	}
 	Trace trace = triangle.hit(ray);
 	if (!trace.hit) {
-		best = closest_triangle(bvh, wide, ray, true);
+		best = closest_triangle<Lanes>(bvh, wide, ray, true);
 		if (best.primitive != NONE) trace = bvh.primitives[best.primitive].hit(ray);
 	}
 	return trace;
@@ -226,78 +231,54 @@ Trace record(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, Clo
 // A scene's closest hit through its flat meshes (wide_bvh.h): the closest triangle of the flat
 // meshes, then the other objects up to it; a triangle's record is made as its object's hit() makes
 // it (Triangle::hit, then Instance::world_record).
-Trace flat_hit(const BVH<Instance>& objects, const Flat_Meshes& flat, const Ray& ray) {
-	Closest_Triangle nearest = closest_triangle(flat.triangles, flat.wide, ray, false);
+template<typename Lanes> Trace flat_hit(const BVH<Instance>& objects, const Flat_Meshes& flat, const Ray& ray) {
+	Closest_Triangle nearest = closest_triangle<Lanes>(flat.triangles, flat.wide, ray, false);
 	Instance_Leaves<false> others{objects, Trace{}};
 	if (!flat.others.nodes.empty()) {
 		Ray rest = ray;
 		rest.dist_bounds.y = std::min(rest.dist_bounds.y, nearest.t);
-		traverse<false>(flat.others, rest, others);
+		traverse<false, Lanes>(flat.others, rest, others);
 		if (others.closest.hit) return others.closest;
 	}
 	if (nearest.primitive == NONE) return Trace{};
-	Trace trace = record(flat.triangles, flat.wide, ray, nearest);
+	Trace trace = record<Lanes>(flat.triangles, flat.wide, ray, nearest);
 	if (nearest.primitive == NONE) return Trace{};
 	return objects.primitives[flat.owner[nearest.primitive]].world_record(ray, trace);
 }
 
-bool flat_occluded(const BVH<Instance>& objects, const Flat_Meshes& flat, const Ray& ray) {
+template<typename Lanes> bool flat_occluded(const BVH<Instance>& objects, const Flat_Meshes& flat, const Ray& ray) {
 	Triangle_Leaves<true> triangles{flat.triangles, flat.wide, false};
-	if (traverse<true>(flat.wide, ray, triangles)) return true;
+	if (traverse<true, Lanes>(flat.wide, ray, triangles)) return true;
 	Instance_Leaves<true> others{objects, Trace{}};
-	return traverse<true>(flat.others, ray, others);
+	return traverse<true, Lanes>(flat.others, ray, others);
 }
 
-size_t bytes_of(const Wide_BVH& wide) {
-	return wide.nodes.capacity() * sizeof(Wide_Node) + wide.triangle_packs.capacity() * sizeof(Triangle_Pack);
-}
 
-} // namespace
-
-template<typename Primitive> Accelerator<Primitive>::Accelerator(const BVH<Primitive>& bvh) {
-	Wide_BVH folded;
-	if constexpr (std::is_same_v<Primitive, Instance>) folded.flat = flatten(bvh);
-	if (!folded.flat) folded = widen(bvh);
-	wide = std::make_shared<const Wide_BVH>(std::move(folded));
-}
-
-template<typename Primitive> Trace Accelerator<Primitive>::hit(const BVH<Primitive>& bvh, const Ray& ray) const {
-	if (!wide) return bvh.hit(ray);
-	if constexpr (std::is_same_v<Primitive, Triangle>) {
-		Closest_Triangle best = closest_triangle(bvh, *wide, ray, false);
+// The four queries of wide_bvh_queries.h, with the node test `Lanes`.
+template<typename Lanes> struct Queries {
+	static Trace hit_triangles(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray) {
+		Closest_Triangle best = closest_triangle<Lanes>(bvh, wide, ray, false);
 		if (best.primitive == NONE) return Trace{};
-		return record(bvh, *wide, ray, best);
-	} else {
-		if (wide->flat) return flat_hit(bvh, *wide->flat, ray);
+		return record<Lanes>(bvh, wide, ray, best);
+	}
+	static bool triangles_occluded(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray) {
+		Triangle_Leaves<true> leaves{bvh, wide, false};
+		return traverse<true, Lanes>(wide, ray, leaves);
+	}
+	static Trace hit_objects(const BVH<Instance>& bvh, const Wide_BVH& wide, const Ray& ray) {
+		if (wide.flat) return flat_hit<Lanes>(bvh, *wide.flat, ray);
 		Instance_Leaves<false> leaves{bvh, Trace{}};
-		traverse<false>(*wide, ray, leaves);
+		traverse<false, Lanes>(wide, ray, leaves);
 		return leaves.closest;
 	}
-}
-
-template<typename Primitive> bool Accelerator<Primitive>::occluded(const BVH<Primitive>& bvh, const Ray& ray) const {
-	if (!wide) return bvh.hit(ray).hit;
-	if constexpr (std::is_same_v<Primitive, Triangle>) {
-		Triangle_Leaves<true> leaves{bvh, *wide, false};
-		return traverse<true>(*wide, ray, leaves);
-	} else {
-		if (wide->flat) return flat_occluded(bvh, *wide->flat, ray);
+	static bool objects_occluded(const BVH<Instance>& bvh, const Wide_BVH& wide, const Ray& ray) {
+		if (wide.flat) return flat_occluded<Lanes>(bvh, *wide.flat, ray);
 		Instance_Leaves<true> leaves{bvh, Trace{}};
-		return traverse<true>(*wide, ray, leaves);
+		return traverse<true, Lanes>(wide, ray, leaves);
 	}
-}
-
-template<typename Primitive> size_t Accelerator<Primitive>::bytes() const {
-	if (!wide) return 0;
-	size_t bytes = bytes_of(*wide);
-	if (wide->flat) {
-		const Flat_Meshes& flat = *wide->flat;
-		bytes += bytes_of(flat.wide) + bytes_of(flat.others) + flat.owner.capacity() * sizeof(uint32_t) +
-		         flat.triangles.nodes.capacity() * sizeof(flat.triangles.nodes[0]) +
-		         flat.triangles.primitives.capacity() * sizeof(Triangle);
+	static constexpr Wide_Queries table(int lanes) {
+		return Wide_Queries{lanes, hit_triangles, triangles_occluded, hit_objects, objects_occluded};
 	}
-	return bytes;
-}
+};
 
-template class Accelerator<Triangle>;
-template class Accelerator<Instance>;
+} // namespace
