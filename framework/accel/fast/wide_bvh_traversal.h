@@ -10,6 +10,7 @@
 #include "wide_bvh_queries.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <cmath>
 #include <iterator>
 #include <utility>
@@ -20,6 +21,9 @@ namespace {
 using namespace four_wide;
 
 constexpr uint32_t NONE = ~0u;
+
+// The lines of a Wide_Node that a node's test reads: the boxes, `first` and `count` (not `start`).
+constexpr size_t NODE_TEST_BYTES = offsetof(Wide_Node, start);
 
 // Starts loading the cache lines of `size` bytes at `start` before they are used.
 [[gnu::always_inline]] inline void prefetch(const void* start, size_t size) {
@@ -142,9 +146,10 @@ template<bool ANY_HIT, typename Lanes, typename Leaves> bool traverse(const Wide
 					stack = heap_stack.data();
 				}
 				auto hit = [&](int slot) { return Child{node.first[slot], node.count[slot], t_enter[slot]}; };
-				for (unsigned found = mask; found != 0; found &= found - 1) { // the leaves found, fetched at once
+				for (unsigned found = mask; found != 0; found &= found - 1) { // the children found, fetched at once
 					int slot = __builtin_ctz(found);
 					if (node.count[slot] > 0) leaves.prefetch_leaf(node, slot);
+					else prefetch(&wide.nodes[node.first[slot]], NODE_TEST_BYTES);
 				}
 				int near = __builtin_ctz(mask);
 				mask &= mask - 1;
