@@ -3,8 +3,8 @@
 // command a user runs; relMSE against one reference of each renderer (two independent halves, whose
 // difference estimates the reference's own noise); time to relMSE 1e-3 from the command's start and
 // from the render time alone; and both again with their own adaptive sampling, over a ladder of
-// thresholds, with the bias adaptive sampling leaves in the image's mean. `./lab bench cycles --help`;
-// bench/README.md.
+// thresholds, with the bias adaptive sampling leaves in the image's mean. Several scenes: one after
+// another, then a summary of them. `./lab bench cycles --help`; bench/README.md.
 #include "bench_timing.h"
 #include "bench_usage.h"
 #include "convergence_metrics.h"
@@ -32,7 +32,7 @@ constexpr double TARGET_REL_MSE = 1e-3;
 const Renderer RENDERERS[] = {Renderer::lab, Renderer::cycles};
 
 struct Options {
-	std::string scene = "scenes/cornell_box.json";
+	std::vector<std::string> scenes; // in the order given; none: the Cornell box
 	std::vector<uint32_t> ladder{16, 32, 64, 128, 256};
 	uint32_t repeats = 3, reference_spp = 4096, threads = 2, max_depth = 100;
 	std::string out = "bench/results", cache = LAB_BENCH_BINARY_DIR "/cycles_cache";
@@ -46,7 +46,7 @@ struct Options {
 };
 
 const Bench_Usage USAGE{"cycles_bench",
-	"usage: cycles_bench [SCENE] [--spp-ladder N,N,...] [--repeats N] [--reference-spp N] [--max-depth D]\n"
+	"usage: cycles_bench [SCENE...] [--spp-ladder N,N,...] [--repeats N] [--reference-spp N] [--max-depth D]\n"
 	"                    [--threads T] [--cycles-option OPTION]... [--out DIR]\n"
 	"                    [--adaptive-ladder T,T,...] [--cycles-adaptive-ladder T,T,...] [--adaptive-spp N] [--no-adaptive]\n"
 	"\n"
@@ -64,7 +64,11 @@ const Bench_Usage USAGE{"cycles_bench",
 	"Then both again with their own adaptive sampling, at most --adaptive-spp samples a pixel (default 4 x the\n"
 	"ladder's largest), over a ladder of thresholds: ours --adaptive T (default 0.25,0.177,0.125,0.088,0.0625),\n"
 	"Cycles' noise threshold (default 0.16,0.08,0.04,0.02,0.01); time to relMSE 1e-3 along each, and the\n"
-	"bias of the image's mean against the renderer's own reference. --no-adaptive: the uniform renders only.\n"};
+	"bias of the image's mean against the renderer's own reference. --no-adaptive: the uniform renders only.\n"
+	"Several SCENEs: one after another, each through all of the above with the same options; a scene other\n"
+	"than the Cornell box writes DIR/cycles_time_to_error_<scene file stem>.{md,csv,svg}. Then a summary, one\n"
+	"row per scene: the uniform times to 1e-3 against Cycles' reference, ours, Cycles' and ours / Cycles, from\n"
+	"the command's start and in render time; printed and written to DIR/cycles_time_to_error_scenes.md.\n"};
 
 std::vector<double> threshold_ladder(const std::string& option, const std::string& value) {
 	std::vector<double> ladder;
@@ -84,6 +88,13 @@ std::vector<double> threshold_ladder(const std::string& option, const std::strin
 	return ladder;
 }
 
+// Where a scene's results go, without the extension: DIR/cycles_time_to_error for the Cornell box (as
+// ever), DIR/cycles_time_to_error_<scene file stem> for any other.
+std::string results_path(const std::string& out, const std::string& scene) {
+	std::string stem = std::filesystem::path(scene).stem().string();
+	return out + "/cycles_time_to_error" + (stem == "cornell_box" ? "" : "_" + stem);
+}
+
 Options parse(int argc, char** argv) {
 	Options o;
 	for (int i = 1; i < argc; i++) {
@@ -94,7 +105,7 @@ Options parse(int argc, char** argv) {
 			continue;
 		}
 		if (arg.rfind("--", 0) != 0) {
-			o.scene = arg;
+			o.scenes.push_back(arg);
 			continue;
 		}
 		std::string value = USAGE.value_of(i, argc, argv);
@@ -118,7 +129,15 @@ Options parse(int argc, char** argv) {
 			if (o.ladder.size() < 2) USAGE.error("--spp-ladder needs two spp or more, e.g. 16,32,64");
 		} else USAGE.error("unknown option '" + arg + "'");
 	}
-	if (!std::filesystem::is_regular_file(o.scene)) USAGE.error("no such scene file: " + o.scene);
+	if (o.scenes.empty()) o.scenes.push_back("scenes/cornell_box.json");
+	for (size_t i = 0; i < o.scenes.size(); i++) {
+		if (!std::filesystem::is_regular_file(o.scenes[i])) USAGE.error("no such scene file: " + o.scenes[i]);
+		for (size_t j = 0; j < i; j++) {
+			if (std::filesystem::equivalent(o.scenes[j], o.scenes[i])) USAGE.error("scene given twice: " + o.scenes[i]);
+			if (results_path(o.out, o.scenes[j]) == results_path(o.out, o.scenes[i]))
+				USAGE.error(o.scenes[j] + " and " + o.scenes[i] + " would write the same files (the same file name)");
+		}
+	}
 	if (o.ours_thresholds.size() != o.cycles_thresholds.size()) {
 		USAGE.error("--adaptive-ladder and --cycles-adaptive-ladder need as many thresholds each");
 	}
@@ -136,8 +155,8 @@ double mean(const std::vector<double>& values) {
 
 // A renderer's high-spp image as two halves (seeds 1000001 and 1000002), cached under a name made
 // from what it depends on.
-Noisy_Image reference(Renderer renderer, const Options& o, const std::string& work_dir) {
-	std::string identity = read_text_file(o.scene) + "|" + read_text_file(LAB_CYCLES_SCRIPT) + "|" +
+Noisy_Image reference(Renderer renderer, const std::string& scene, const Options& o, const std::string& work_dir) {
+	std::string identity = read_text_file(scene) + "|" + read_text_file(LAB_CYCLES_SCRIPT) + "|" +
 	                       std::to_string(o.reference_spp) + "|" + std::to_string(o.max_depth);
 	for (const std::string& option : o.cycles_options) identity += "|" + option;
 	char key[32];
@@ -148,7 +167,7 @@ Noisy_Image reference(Renderer renderer, const Options& o, const std::string& wo
 		std::string path = o.cache + "/" + (renderer == Renderer::lab ? "lab_" : "cycles_") + key + "_" +
 		                   std::to_string(half) + ".exr";
 		if (!std::filesystem::exists(path)) {
-			Render_Request request{o.scene, o.reference_spp / 2, 1000000 + half, o.threads, o.max_depth, {}, o.cycles_options, {}};
+			Render_Request request{scene, o.reference_spp / 2, 1000000 + half, o.threads, o.max_depth, {}, o.cycles_options, {}};
 			Renderer_Run run = run_renderer(renderer, request, work_dir);
 			std::printf("  %s reference half %llu: %u spp in %.0f s\n", renderer_name(renderer),
 			            static_cast<unsigned long long>(half), request.spp, run.command_seconds);
@@ -282,15 +301,23 @@ std::string joined(const std::vector<double>& values, const std::function<std::s
 	return text;
 }
 
-int run(const Options& o) {
+// What the summary of several scenes needs of one: the uniform series against Cycles' reference.
+struct Scene_Result {
+	Curve ours, cycles;
+	bool written;
+};
+
+// The whole procedure on one scene: references, the timed renders, the fits; prints and writes its
+// tables, the renders' CSV and the plot.
+Scene_Result run_scene(const std::string& scene, const Options& o) {
 	std::string work_dir = std::filesystem::temp_directory_path() / ("lab_cycles_bench_" + std::to_string(getpid()));
 	std::filesystem::create_directories(work_dir);
 	std::string load_before = load_average();
-	std::printf("Cycles beside ours: %s, max depth %u, %u threads; load average at the start: %s\n", o.scene.c_str(),
+	std::printf("Cycles beside ours: %s, max depth %u, %u threads; load average at the start: %s\n", scene.c_str(),
 	            o.max_depth, o.threads, load_before.c_str());
 	std::printf("references (%u spp each, two halves; cached in %s):\n", o.reference_spp, o.cache.c_str());
 	std::fflush(stdout);
-	Noisy_Image references[2] = {reference(Renderer::lab, o, work_dir), reference(Renderer::cycles, o, work_dir)};
+	Noisy_Image references[2] = {reference(Renderer::lab, scene, o, work_dir), reference(Renderer::cycles, scene, o, work_dir)};
 	double noise[2] = {noise_rel_mse(references[0], references[0].mean), noise_rel_mse(references[1], references[1].mean)};
 	double reference_means[2] = {image_mean(references[0].mean), image_mean(references[1].mean)};
 	double references_apart = rel_mse(references[1].mean, references[0].mean);
@@ -305,7 +332,7 @@ int run(const Options& o) {
 		return series.renderer == Renderer::lab ? o.ours_thresholds : o.cycles_thresholds;
 	};
 	auto request_for = [&](const Series& series, size_t step, uint64_t seed) {
-		Render_Request request{o.scene, o.ladder[std::min(step, o.ladder.size() - 1)], seed, o.threads, o.max_depth, {},
+		Render_Request request{scene, o.ladder[std::min(step, o.ladder.size() - 1)], seed, o.threads, o.max_depth, {},
 		                       o.cycles_options, {}};
 		if (!series.adaptive) return request;
 		request.spp = o.adaptive_spp;
@@ -332,8 +359,8 @@ int run(const Options& o) {
 	std::shuffle(jobs.begin(), jobs.end(), std::mt19937(12345));
 
 	std::filesystem::create_directories(o.out);
-	std::string csv_path = o.out + "/cycles_time_to_error.csv";
-	std::ofstream csv(csv_path);
+	std::string results_base = results_path(o.out, scene);
+	std::ofstream csv(results_base + ".csv");
 	csv << "renderer,adaptive,spp,threshold,seed,command_seconds,render_seconds,mean_spp,relmse_vs_ours,relmse_vs_cycles,"
 	       "mean_difference_vs_own\n";
 	std::vector<Run_Result> results[4];
@@ -372,7 +399,7 @@ int run(const Options& o) {
 
 	std::string table, joined_options;
 	for (const std::string& option : o.cycles_options) joined_options += " " + option;
-	table += "Scene `" + o.scene + "`, film as in the scene, max depth " + std::to_string(o.max_depth) + ", " +
+	table += "Scene `" + scene + "`, film as in the scene, max depth " + std::to_string(o.max_depth) + ", " +
 	         std::to_string(o.threads) + " threads; " + std::to_string(o.repeats) + " renders per spp and renderer; " +
 	         (o.cycles_options.empty() ? "" : "render_in_cycles.py with" + joined_options + "; ") +
 	         "load average (1, 5, 15 min) " + load_before + " at the start, " + load_ladder + " when the timed renders began, " +
@@ -440,11 +467,11 @@ int run(const Options& o) {
 		         " of its time from the command's start.\n";
 	}
 	std::printf("\n%s", table.c_str());
-	std::ofstream(o.out + "/cycles_time_to_error.md") << table;
+	std::ofstream(results_base + ".md") << table;
 
 	Plot plot;
 	plot.title = "Time to relMSE 1e-3: the lab's reference renderer beside Blender Cycles 3.4, one run";
-	plot.subtitle = o.scene + ", max depth " + std::to_string(o.max_depth) + ", " + std::to_string(o.threads) +
+	plot.subtitle = scene + ", max depth " + std::to_string(o.max_depth) + ", " + std::to_string(o.threads) +
 	                " threads; against Cycles' " + std::to_string(o.reference_spp) + "-spp reference; load " +
 	                load_ladder + " -> " + load_after;
 	plot.x_label = "seconds";
@@ -461,9 +488,53 @@ int run(const Options& o) {
 		}
 		plot.panels.push_back(panel);
 	}
-	write_convergence_svg(o.out + "/cycles_time_to_error.svg", plot);
-	std::printf("\nwrote %s/cycles_time_to_error.{md,csv,svg}\n", o.out.c_str());
-	return csv ? 0 : 1;
+	write_convergence_svg(results_base + ".svg", plot);
+	std::printf("\nwrote %s.{md,csv,svg}\n", results_base.c_str());
+	return {ours, cycles, bool(csv)};
+}
+
+// Several scenes' uniform times to relMSE 1e-3 against Cycles' reference, one row each, in markdown.
+std::string scenes_summary(const Options& o, const std::vector<Scene_Result>& results, const std::string& load_before,
+                           const std::string& load_after, double seconds) {
+	std::string ladder;
+	for (uint32_t spp : o.ladder) ladder += (ladder.empty() ? "" : ",") + std::to_string(spp);
+	std::string table =
+		"Time to relMSE 1e-3 against Cycles' reference, uniform sampling, ours beside Cycles, one scene after another "
+		"(each scene's details in its cycles_time_to_error*.md): max depth " + std::to_string(o.max_depth) + ", " +
+		std::to_string(o.threads) + " threads; " + std::to_string(o.repeats) + " renders per spp of " + ladder +
+		" and renderer; references of " + std::to_string(o.reference_spp) + " spp. Load average (1, 5, 15 min) " +
+		load_before + " at the start of the run, " + load_after + " at the end; the run took " + fixed(seconds, 0) +
+		" s.\n\n| scene | ours s to 1e-3 (command) | Cycles s to 1e-3 (command) | ours / Cycles (command) | "
+		"ours s to 1e-3 (render) | Cycles s to 1e-3 (render) | ours / Cycles (render) |\n|---|---|---|---|---|---|---|\n";
+	for (size_t i = 0; i < results.size(); i++) {
+		const Curve &ours = results[i].ours, &cycles = results[i].cycles;
+		table += "| `" + o.scenes[i] + "` | " + fixed(ours.command_to_target, 2) + " s | " +
+		         fixed(cycles.command_to_target, 2) + " s | " + fixed(ours.command_to_target / cycles.command_to_target, 2) +
+		         " | " + fixed(ours.render_to_target, 2) + " s | " + fixed(cycles.render_to_target, 2) + " s | " +
+		         fixed(ours.render_to_target / cycles.render_to_target, 2) + " |\n";
+	}
+	return table + "\n(ours / Cycles: the share of Cycles' time ours takes, e.g. 0.40: ours takes 0.40 of Cycles' time.)\n";
+}
+
+int run(const Options& o) {
+	auto start = std::chrono::steady_clock::now();
+	std::string load_before = load_average();
+	std::vector<Scene_Result> results;
+	bool written = true;
+	for (const std::string& scene : o.scenes) {
+		if (!results.empty()) std::printf("\n");
+		results.push_back(run_scene(scene, o));
+		written = written && results.back().written;
+	}
+	if (o.scenes.size() == 1) return written ? 0 : 1;
+	double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+	std::string table = scenes_summary(o, results, load_before, load_average(), seconds);
+	std::printf("\n%s", table.c_str());
+	std::string path = o.out + "/cycles_time_to_error_scenes.md";
+	std::ofstream summary(path);
+	summary << table;
+	std::printf("\nwrote %s\n", path.c_str());
+	return written && summary ? 0 : 1;
 }
 
 } // namespace
