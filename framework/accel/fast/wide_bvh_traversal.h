@@ -146,7 +146,7 @@ template<bool ANY_HIT, typename Lanes, typename Leaves> bool traverse(const Wide
 					stack = heap_stack.data();
 				}
 				auto hit = [&](int slot) { return Child{node.first[slot], node.count[slot], t_enter[slot]}; };
-				for (unsigned found = mask; found != 0; found &= found - 1) { // the children found, fetched at once
+				for (unsigned found = wide.fits_in_cache ? 0 : mask; found != 0; found &= found - 1) { // the children found, fetched at once
 					int slot = __builtin_ctz(found);
 					if (node.count[slot] > 0) leaves.prefetch_leaf(node, slot);
 					else prefetch(&wide.nodes[node.first[slot]], NODE_TEST_BYTES);
