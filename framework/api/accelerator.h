@@ -3,8 +3,9 @@
 // whether anything is hit (an occlusion query). A program links one of two implementations, chosen
 // with its tasks (cmake/lab.cmake, lab_link_tasks):
 // - where tasks 2 and 3 are both the reference, the fast one (shipped compiled): it folds the
-//   finished tree into wide nodes and packs a mesh's triangles, finds the closest (triangle, t),
-//   and lets Triangle::hit make the record of that triangle;
+//   finished tree into wide nodes and packs a mesh's triangles, tests them with the widest vectors
+//   the CPU has, finds the closest (triangle, t, u, v), and makes that triangle's record as
+//   Triangle::hit makes it, bit for bit;
 // - otherwise the plain one (framework/accel/plain_accelerator.cpp): BVH::hit, so that a student's
 //   BBox::hit, BVH::hit and Triangle::hit are what runs, end to end.
 // Either way, hit() returns the record Primitive::hit makes, as BVH::hit does.
