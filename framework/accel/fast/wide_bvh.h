@@ -1,7 +1,7 @@
 #pragma once
 // The fast accelerator's data: a finished BVH folded into wide nodes, and a mesh's triangles in
-// packs, laid out for 4-wide vector arithmetic (bench/README.md, "How the BVH queries are made
-// fast"). Built from any task-3 tree; used only where tasks 2 and 3 are both the reference.
+// packs, laid out for vector arithmetic on four or eight lanes (bench/README.md, "How the BVH
+// queries are made fast"). Built from any task-3 tree; used only where tasks 2 and 3 are both the reference.
 #include "bvh.h"
 #include "instance.h"
 #include "tri_mesh.h"
@@ -11,11 +11,11 @@
 #include <vector>
 
 // The binary tree with two of every three levels folded in: a node has up to eight children, whose
-// boxes two 4-wide slab tests handle.
+// boxes one 8-wide slab test handles, or two 4-wide ones (wide_bvh_queries.h).
 struct alignas(64) Wide_Node { // 288 bytes, padded to 320: five cache lines
 	static constexpr int WIDTH = 8; // children per node
-	// The children's boxes, one array per bound and axis, so that one 4-wide instruction handles
-	// the same bound of four children. An unused slot holds an empty box.
+	// The children's boxes, one array per bound and axis, so that one vector instruction handles
+	// the same bound of four or eight children. An unused slot holds an empty box.
 	float min_x[WIDTH], min_y[WIDTH], min_z[WIDTH], max_x[WIDTH], max_y[WIDTH], max_z[WIDTH];
 	uint32_t first[WIDTH]; // interior child: its index in Wide_BVH::nodes; leaf: its first primitive,
 	                       // or in a BVH<Triangle> its first triangle pack

@@ -10,8 +10,8 @@
 #include "wide_bvh_queries.h"
 
 #include <algorithm>
-#include <cstddef>
 #include <cmath>
+#include <cstddef>
 #include <iterator>
 #include <utility>
 #include <vector>
@@ -107,8 +107,8 @@ template<bool ANY_HIT> struct Instance_Leaves {
 	}
 };
 
-// Front to back (handouts/task3_bvh.md §3.3) over the wide nodes: test a node's children four at a
-// time, go down into the nearest child hit and keep the others on a stack, with the t at which the
+// Front to back (handouts/task3_bvh.md §3.3) over the wide nodes: test a node's children
+// (Lanes::hit_children), fetch those hit, go down into the nearest child hit and keep the others on a stack, with the t at which the
 // ray enters them; at a leaf, leaves.visit(). The closest-hit query shrinks the ray to each hit it
 // finds; the any-hit query returns at the first, and takes the children hit in slot order: any hit
 // will do, so sorting them buys nothing (the answer is the same in any order). Returns whether an
