@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# The fast accelerator's two vector widths answer alike (framework/accel/fast/wide_bvh_queries.h):
-# renders whose queries take four lanes (LAB_VECTOR_WIDTH=4, the path of CPUs without AVX2) are the
-# renders of eight lanes byte for byte, on scenes that use every query (a mesh's own tree and a
-# scene's, closest and any hit, flat meshes and spheres). An unknown width is refused by name; on a
-# CPU without AVX2, so is 8.
+# The fast accelerator's two vector widths answer alike (framework/api/accelerator.h; the
+# instructors' wide_bvh_queries.h): renders whose queries take four lanes (LAB_VECTOR_WIDTH=4, the
+# path of CPUs without AVX2) are the renders of eight lanes byte for byte, on scenes that use every
+# query (a mesh's own tree and a scene's, closest and any hit, flat meshes and spheres). An unknown
+# width is refused by name; on a CPU without AVX2, so is 8.
 #
 # usage: test_vector_widths.sh PATHTRACER_REFERENCE REPOSITORY_ROOT
 set -euo pipefail
@@ -22,7 +22,7 @@ if grep -qw avx2 /proc/cpuinfo 2>/dev/null && [ "$(uname -m)" = x86_64 ]; then
 		render 4 "$scene" "$tmp/$scene-4.exr" || fail "$scene with four lanes failed"
 		render 8 "$scene" "$tmp/$scene-8.exr" || fail "$scene with eight lanes failed"
 		cmp -s "$tmp/$scene-4.exr" "$tmp/$scene-8.exr" ||
-			fail "$scene: four lanes and eight render different images; the two node tests must answer alike (four_wide_tests.h, eight_wide_queries.cpp)"
+			fail "$scene: four lanes and eight render different images; the two node tests must answer alike (four_wide_tests.h and eight_wide_queries.cpp of the instructors' repository)"
 		echo "vector widths test: $scene, four and eight lanes, the same image"
 	done
 else
