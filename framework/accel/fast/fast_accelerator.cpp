@@ -10,16 +10,20 @@
 #include <string>
 #include <type_traits>
 
+// Chosen once per process: the widest the CPU runs, unless LAB_VECTOR_WIDTH asks for a width.
 const Wide_Queries& chosen_queries() {
-	static const Wide_Queries& chosen = [] () -> const Wide_Queries& {
+	static const Wide_Queries& chosen = []() -> const Wide_Queries& {
 		const Wide_Queries* eight = eight_wide_queries();
 		const char* asked = std::getenv("LAB_VECTOR_WIDTH");
 		std::string width = asked ? asked : "";
 		if (width.empty()) return eight ? *eight : four_wide_queries;
 		if (width == "4") return four_wide_queries;
 		if (width == "8" && eight) return *eight;
-		if (width == "8") throw std::runtime_error("LAB_VECTOR_WIDTH=8: this CPU has no AVX2 (x86-64), so the BVH's queries take four lanes; leave LAB_VECTOR_WIDTH unset or set it to 4");
-		throw std::runtime_error("LAB_VECTOR_WIDTH=" + width + ": expected 4 or 8 (the lanes of the BVH's node test), or unset for the widest the CPU has");
+		if (width == "8")
+			throw std::runtime_error("LAB_VECTOR_WIDTH=8: this CPU has no AVX2 (x86-64), so the BVH's queries take "
+			                         "four lanes; leave LAB_VECTOR_WIDTH unset or set it to 4");
+		throw std::runtime_error("LAB_VECTOR_WIDTH=" + width +
+		                         ": expected 4 or 8 (the lanes of the BVH's node test), or unset for the widest the CPU has");
 	}();
 	return chosen;
 }

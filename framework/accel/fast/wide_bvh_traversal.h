@@ -108,12 +108,13 @@ template<bool ANY_HIT> struct Instance_Leaves {
 };
 
 // Front to back (handouts/task3_bvh.md §3.3) over the wide nodes: test a node's children
-// (Lanes::hit_children), fetch those hit, go down into the nearest child hit and keep the others on a stack, with the t at which the
-// ray enters them; at a leaf, leaves.visit(). The closest-hit query shrinks the ray to each hit it
-// finds; the any-hit query returns at the first, and takes the children hit in slot order: any hit
-// will do, so sorting them buys nothing (the answer is the same in any order). Returns whether an
-// any-hit query found a hit.
-template<bool ANY_HIT, typename Lanes, typename Leaves> bool traverse(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
+// (Lanes::hit_children), fetch those hit, go down into the nearest and keep the others on a stack,
+// with the t at which the ray enters them; at a leaf, leaves.visit(). The closest-hit query shrinks
+// the ray to each hit it finds; the any-hit query returns at the first, and takes the children hit
+// in slot order: any hit will do, so sorting them buys nothing (the answer is the same in any
+// order). Returns whether an any-hit query found a hit.
+template<bool ANY_HIT, typename Lanes, typename Leaves>
+bool traverse(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
 	struct Child { // a wide node (count 0) or a leaf's primitives
 		uint32_t first, count;
 		float t_enter;
@@ -146,7 +147,8 @@ template<bool ANY_HIT, typename Lanes, typename Leaves> bool traverse(const Wide
 					stack = heap_stack.data();
 				}
 				auto hit = [&](int slot) { return Child{node.first[slot], node.count[slot], t_enter[slot]}; };
-				for (unsigned found = wide.fits_in_cache ? 0 : mask; found != 0; found &= found - 1) { // the children found, fetched at once
+				// The children found, fetched at once (unless the tree stays in the cache anyway).
+				for (unsigned found = wide.fits_in_cache ? 0 : mask; found != 0; found &= found - 1) {
 					int slot = __builtin_ctz(found);
 					if (node.count[slot] > 0) leaves.prefetch_leaf(node, slot);
 					else prefetch(&wide.nodes[node.first[slot]], NODE_TEST_BYTES);
@@ -200,7 +202,8 @@ struct Closest_Triangle {
 	float t, u, v;
 };
 
-template<typename Lanes> Closest_Triangle closest_triangle(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, bool exact) {
+template<typename Lanes>
+Closest_Triangle closest_triangle(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, bool exact) {
 	Triangle_Leaves<false> leaves{bvh, wide, exact};
 	traverse<false, Lanes>(wide, ray, leaves);
 	return Closest_Triangle{leaves.best, leaves.t, leaves.u, leaves.v};
@@ -213,7 +216,8 @@ template<typename Lanes> Closest_Triangle closest_triangle(const BVH<Triangle>& 
 // makes it; if that misses (the pack rounded otherwise), the query starts over with `exact`: every
 // candidate to Triangle::hit, and `best` becomes the triangle it finds. The record is one variable
 // returned all the way, so it is written where the caller wants it.
-template<typename Lanes> Trace record(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, Closest_Triangle& best) {
+template<typename Lanes>
+Trace record(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, Closest_Triangle& best) {
 	const Triangle& triangle = bvh.primitives[best.primitive];
 	if constexpr (PACK_IS_EXACT) {
 		float u = best.u, v = best.v;
