@@ -13,9 +13,16 @@ struct Instance {
 	// Intersects the shape in local space (ray parameters t are unchanged by affine transforms)
 	// and returns the hit in world space, with `object` and `material` filled in.
 	Trace hit(const Ray& ray) const;
-	// What hit() makes of the shape's own record `local` of `ray`: the hit in world space, with
+	// What hit() makes of the shape's own record of `ray`, in place: the hit in world space, with
 	// `object` and `material` filled in.
-	Trace world_record(const Ray& ray, Trace local) const;
+	void world_record(const Ray& ray, Trace& record) const {
+		if (!record.hit) return;
+		record.origin = ray.point;
+		record.position = ray.at(record.distance);
+		record.normal = glm::normalize(identity ? record.normal : normal_to_world * record.normal);
+		record.object = index;
+		record.material = material;
+	}
 	BBox bbox() const {
 		return world_bbox;
 	}

@@ -32,18 +32,8 @@ Trace Instance::hit(const Ray& ray) const {
 	Ray local = identity ? ray
 	                     : Ray(transform_point(to_local, ray.point), transform_direction(to_local, ray.dir),
 	                           ray.dist_bounds, ray.depth);
-	Trace trace = world_record(ray, std::visit([&](const auto& s) { return s.hit(local); }, shape));
+	Trace trace = std::visit([&](const auto& s) { return s.hit(local); }, shape);
+	world_record(ray, trace);
 	report<Instance_Tested>(trace, *this, ray);
-	return trace;
-}
-
-Trace Instance::world_record(const Ray& ray, Trace trace) const {
-	if (trace.hit) {
-		trace.origin = ray.point;
-		trace.position = ray.at(trace.distance);
-		trace.normal = glm::normalize(identity ? trace.normal : normal_to_world * trace.normal);
-		trace.object = index;
-		trace.material = material;
-	}
 	return trace;
 }

@@ -239,9 +239,7 @@ Trace record(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, Clo
 
 // A scene's closest hit through its flat meshes (wide_bvh.h): the closest triangle of the flat
 // meshes, then the other objects up to it; a triangle's record is made as its object's hit() makes
-// it: Triangle::hit's (record()), then what Instance::world_record does for an object without a
-// transform, made here in place: the normal normalized once more, the object's index and material
-// (the point and the origin are the same ray's already).
+// it (Triangle::hit's, record(), then Instance::world_record, both in place).
 template<typename Lanes> Trace flat_hit(const BVH<Instance>& objects, const Flat_Meshes& flat, const Ray& ray) {
 	Closest_Triangle nearest = closest_triangle<Lanes>(flat.triangles, flat.wide, ray, false);
 	Instance_Leaves<false> others{objects, Trace{}};
@@ -254,9 +252,7 @@ template<typename Lanes> Trace flat_hit(const BVH<Instance>& objects, const Flat
 	if (nearest.primitive == NONE) return Trace{};
 	Trace trace = record<Lanes>(flat.triangles, flat.wide, ray, nearest);
 	if (nearest.primitive == NONE) return Trace{};
-	const Instance& object = objects.primitives[flat.owner[nearest.primitive]];
-	trace.normal = glm::normalize(trace.normal);
-	trace.object = object.index, trace.material = object.material;
+	objects.primitives[flat.owner[nearest.primitive]].world_record(ray, trace);
 	return trace;
 }
 
