@@ -50,3 +50,34 @@ TEST_CASE("the accelerator's closest hit records what Triangle::hit records for 
 	}
 	CHECK(hits > 1000);
 }
+
+TEST_CASE("the accelerator breaks a tie as a triangle-by-triangle search does: the triangle first in the mesh's "
+          "order wins",
+          "[framework][accelerator]") {
+	// Forty copies of one triangle, each with its own vertex normal: every ray through it hits all
+	// forty at the same t, in one leaf of ten packs (their centroids coincide: no split separates
+	// them). The record must be the one that Trace::min over the triangles, in BVH::primitives'
+	// order, keeps: the first's, whatever order the accelerator tests the packs and lanes in.
+	std::vector<Triangle> copies;
+	for (int i = 0; i < 40; i++) {
+		Vec3 normal = glm::normalize(Vec3{0.02f * float(i), 0.0f, 1.0f});
+		copies.push_back(Triangle{{{-1, -1, 0}, normal}, {{1, -1, 0}, normal}, {{0, 1, 0}, normal}});
+	}
+	Tri_Mesh mesh(copies, 4);
+	std::mt19937 random(7);
+	std::uniform_real_distribution<float> offset(-0.3f, 0.3f);
+	for (int i = 0; i < 200; i++) {
+		Vec3 from{offset(random), offset(random), 2.0f}, through{offset(random) / 3.0f, offset(random) / 3.0f - 0.2f, 0.0f};
+		Ray ray(from, glm::normalize(through - from));
+		Trace first;
+		for (const Triangle& triangle : mesh.bvh.primitives) first = Trace::min(first, triangle.hit(ray));
+		Trace got = mesh.hit(ray);
+		INFO("ray " << i << ": the accelerator's record has normal (" << got.normal.x << ", " << got.normal.y << ", "
+		            << got.normal.z << "), the first triangle hit at that t has (" << first.normal.x << ", "
+		            << first.normal.y << ", " << first.normal.z
+		            << "): at equal t the lower index in BVH::primitives must win (Triangle_Leaves::visit, in "
+		               "wide_bvh_traversal.h of the instructors' repository)");
+		REQUIRE(first.hit);
+		REQUIRE(same_bits(got, first));
+	}
+}

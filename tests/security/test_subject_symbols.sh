@@ -21,7 +21,7 @@ fail() { echo "subject symbols test: $*" >&2; exit 1; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-fast_accelerator=(wide_bvh_build.cpp flat_meshes.cpp fast_accelerator.cpp four_wide_queries.cpp eight_wide_queries.cpp)
+fast_accelerator=(wide_bvh_build.cpp sah_collapse.cpp flat_meshes.cpp fast_accelerator.cpp four_wide_queries.cpp eight_wide_queries.cpp)
 nee_integrator=(nee_integrator.cpp)
 mapfile -t shipped_compiled < <(cut -d' ' -f2 "$manifest" | grep '\.cpp$' | xargs -n1 basename)
 

@@ -10,8 +10,9 @@
 #include <memory>
 #include <vector>
 
-// The binary tree with two of every three levels folded in: a node has up to eight children, whose
-// boxes one 8-wide slab test handles, or two 4-wide ones (wide_bvh_queries.h).
+// The binary tree folded into nodes of up to eight children (for a mesh, the children and leaves of
+// least SAH cost: sah_collapse.h), whose boxes one 8-wide slab test handles, or two 4-wide ones
+// (wide_bvh_queries.h).
 struct alignas(64) Wide_Node { // 288 bytes, padded to 320: five cache lines
 	static constexpr int WIDTH = 8; // children per node
 	// The children's boxes, one array per bound and axis, so that one vector instruction handles
@@ -19,7 +20,8 @@ struct alignas(64) Wide_Node { // 288 bytes, padded to 320: five cache lines
 	float min_x[WIDTH], min_y[WIDTH], min_z[WIDTH], max_x[WIDTH], max_y[WIDTH], max_z[WIDTH];
 	uint32_t first[WIDTH]; // interior child: its index in Wide_BVH::nodes; leaf: its first primitive,
 	                       // or in a BVH<Triangle> its first triangle pack
-	uint32_t count[WIDTH]; // leaf: its number of primitives (>= 1); interior child or unused: 0
+	uint32_t count[WIDTH]; // leaf: its number of primitives (>= 1, in a BVH<Triangle> up to
+	                       // Sah_Collapse::MAX_LEAF_TRIANGLES or a binary leaf's); interior child or unused: 0
 	                       // (an unused slot has first = UNUSED_SLOT and an empty box)
 	uint32_t start[WIDTH]; // leaf: its first primitive (as BVH::Node::start); otherwise 0. In the last
 	                       // line, read only by closest-hit queries, to fetch a leaf's triangles.

@@ -1,10 +1,12 @@
 // The fast accelerator's build: a finished BVH folded into wide nodes, a mesh's leaves packed.
 #include "instance.h"
+#include "sah_collapse.h"
 #include "tri_mesh.h"
 #include "wide_bvh.h"
 
 #include <algorithm>
 #include <iterator>
+#include <optional>
 #include <type_traits>
 
 namespace {
@@ -33,9 +35,10 @@ uint32_t pack_triangles(const std::vector<Triangle>& triangles, size_t start, si
 
 // The children of binary node `binary` that a wide node takes: its two children, then, until there
 // are Wide_Node::WIDTH or only leaves, the interior child of largest surface area (the one a ray
-// most likely enters) opened into its two. A leaf root is its own single child.
-template<typename Node> std::vector<size_t> wide_children(const std::vector<Node>& nodes, size_t binary) {
-	if (nodes[binary].is_leaf()) return {binary};
+// most likely enters) opened into its two. A leaf root is its own single child. (A BVH<Triangle>'s
+// wide nodes take the children of least SAH cost instead: sah_collapse.h.)
+template<typename Node> std::vector<Wide_Child> largest_first(const std::vector<Node>& nodes, size_t binary) {
+	if (nodes[binary].is_leaf()) return {Wide_Child{binary, true}};
 	std::vector<size_t> children{nodes[binary].l, nodes[binary].r};
 	while (children.size() < size_t(Wide_Node::WIDTH)) {
 		auto largest = children.end();
@@ -49,31 +52,35 @@ template<typename Node> std::vector<size_t> wide_children(const std::vector<Node
 		*largest = nodes[opened].l;
 		children.push_back(nodes[opened].r);
 	}
-	return children;
+	std::vector<Wide_Child> wide;
+	for (size_t c : children) wide.push_back(Wide_Child{c, nodes[c].is_leaf()});
+	return wide;
 }
 
 } // namespace
 
-// From the root down, each wide node takes the children wide_children() chooses. A leaf of the
-// binary tree stays a leaf: a child slot with count > 0.
+// From the root down, each wide node takes the children that Sah_Collapse (a mesh's tree) or
+// largest_first (a scene's) chooses; a leaf is a child slot with count > 0.
 template<typename Primitive> Wide_BVH widen(const BVH<Primitive>& bvh) {
 	Wide_BVH wide;
 	if (bvh.primitives.empty() || bvh.nodes.empty()) return wide;
 	wide.nodes.resize(1);
+	std::optional<Sah_Collapse> collapse;
+	if constexpr (std::is_same_v<Primitive, Triangle>) collapse.emplace(bvh);
 	std::vector<std::pair<size_t, size_t>> todo{{bvh.root_idx, 0}}; // binary node -> its wide node
 	while (!todo.empty()) {
 		auto [binary, index] = todo.back();
 		todo.pop_back();
-		std::vector<size_t> children = wide_children(bvh.nodes, binary);
+		std::vector<Wide_Child> children = collapse ? collapse->children(binary) : largest_first(bvh.nodes, binary);
 		Wide_Node node;
 		for (int slot = 0; slot < Wide_Node::WIDTH; slot++) { // unused slots: an empty box and UNUSED_SLOT
-			BBox box = slot < int(children.size()) ? bvh.nodes[children[slot]].bbox : BBox{};
+			BBox box = slot < int(children.size()) ? bvh.nodes[children[slot].binary].bbox : BBox{};
 			node.min_x[slot] = box.min.x, node.min_y[slot] = box.min.y, node.min_z[slot] = box.min.z;
 			node.max_x[slot] = box.max.x, node.max_y[slot] = box.max.y, node.max_z[slot] = box.max.z;
 			node.first[slot] = Wide_Node::UNUSED_SLOT, node.count[slot] = 0, node.start[slot] = 0;
 			if (slot >= int(children.size())) continue;
-			const auto& child = bvh.nodes[children[slot]];
-			if (child.is_leaf()) {
+			const auto& child = bvh.nodes[children[slot].binary];
+			if (children[slot].leaf) {
 				node.first[slot] = uint32_t(child.start);
 				if constexpr (std::is_same_v<Primitive, Triangle>)
 					node.first[slot] = pack_triangles(bvh.primitives, child.start, child.size, wide.triangle_packs);
@@ -81,7 +88,7 @@ template<typename Primitive> Wide_BVH widen(const BVH<Primitive>& bvh) {
 			} else {
 				node.first[slot] = uint32_t(wide.nodes.size());
 				wide.nodes.emplace_back();
-				todo.push_back({children[slot], wide.nodes.size() - 1});
+				todo.push_back({children[slot].binary, wide.nodes.size() - 1});
 			}
 		}
 		wide.nodes[index] = node;

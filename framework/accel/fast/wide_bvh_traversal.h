@@ -33,7 +33,9 @@ constexpr size_t NODE_TEST_BYTES = offsetof(Wide_Node, start);
 }
 
 // The leaves of a BVH<Triangle>: a pack's test decides its four triangles (hit_pack), and the
-// closest-hit query keeps the closest one's index, hit at r.dist_bounds.y. With `exact` (the
+// closest-hit query keeps the closest one's index, hit at r.dist_bounds.y; of triangles hit at the
+// same t, the lowest index, as Trace::min over BVH::primitives in order keeps it, so that the answer
+// does not depend on the wide tree's shape or the order its packs are tested in. With `exact` (the
 // fallback, see record()) or where the pack may round otherwise than Triangle::hit (fused
 // multiply-add), the candidates go to Triangle::hit.
 template<bool ANY_HIT> struct Triangle_Leaves {
@@ -45,10 +47,12 @@ template<bool ANY_HIT> struct Triangle_Leaves {
 	float u = 0, v = 0; // and its barycentrics (where the pack is exact, Triangle::hit's)
 
 	// What a node's test fetches ahead for a leaf it finds (the leaves found are then fetched at
-	// once): its first pack, rarely in cache, and for the closest hit the pack's triangles, one of
-	// which the record reads: fetched with the pack, it arrives while the pack is tested, not after.
+	// once): its packs, consecutive and rarely in cache, and for the closest hit the first pack's
+	// triangles, one of which the record most likely reads: fetched with the pack, it arrives while
+	// the pack is tested, not after.
 	[[gnu::always_inline]] void prefetch_leaf(const Wide_Node& node, int slot) const {
-		prefetch(&wide.triangle_packs[node.first[slot]], sizeof(Triangle_Pack));
+		uint32_t packs = (node.count[slot] + 3) / 4;
+		prefetch(&wide.triangle_packs[node.first[slot]], packs * sizeof(Triangle_Pack));
 		if (!ANY_HIT) {
 			uint32_t triangles = std::min<uint32_t>(node.count[slot], 4); // the first pack's
 			prefetch(&bvh.primitives[node.start[slot]], triangles * sizeof(Triangle));
@@ -70,6 +74,7 @@ template<bool ANY_HIT> struct Triangle_Leaves {
 				Trace trace = bvh.primitives[i].hit(r);
 				if (!trace.hit) continue;
 				if (ANY_HIT) return true;
+				if (trace.distance == t && i > best) continue; // a tie: the lower index wins
 				best = i, t = r.dist_bounds.y = trace.distance;
 			}
 			for (unsigned lanes = hits.hit; lanes != 0; lanes &= lanes - 1) {
@@ -78,7 +83,8 @@ template<bool ANY_HIT> struct Triangle_Leaves {
 					// The pack's verdict is Triangle::hit's: done, without loading the Triangle.
 					// Otherwise the lab's test confirms it.
 					if (PACK_IS_EXACT || bvh.primitives[pack.index[lane]].hit(r).hit) return true;
-				} else if (hits.t[lane] <= r.dist_bounds.y) { // (an earlier lane may have come closer)
+				} else if (hits.t[lane] < t || (hits.t[lane] == t && pack.index[lane] < best)) {
+					// Closer (than an earlier lane too), or a tie that the lower index wins.
 					best = pack.index[lane], t = r.dist_bounds.y = hits.t[lane];
 					u = hits.u[lane], v = hits.v[lane];
 				}
