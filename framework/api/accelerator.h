@@ -3,8 +3,9 @@
 // whether anything is hit (an occlusion query). A program links one of two implementations, chosen
 // with its tasks (cmake/lab.cmake, lab_link_tasks):
 // - where tasks 2 and 3 are both the reference, the fast one (shipped compiled): it folds the
-//   finished tree into wide nodes and packs a mesh's triangles, tests them with the widest vectors
-//   the CPU has, finds the closest (triangle, t, u, v), and makes that triangle's record as
+//   finished tree into wide nodes (a mesh's the way of least SAH cost) and packs a mesh's
+//   triangles, tests them with the widest vectors the CPU has, finds the closest (triangle, t, u,
+//   v; of several at one t the first in bvh.primitives), and makes that triangle's record as
 //   Triangle::hit makes it, bit for bit;
 // - otherwise the plain one (framework/accel/plain_accelerator.cpp): BVH::hit, so that a student's
 //   BBox::hit, BVH::hit and Triangle::hit are what runs, end to end.
