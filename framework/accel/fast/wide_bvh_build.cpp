@@ -60,7 +60,8 @@ template<typename Node> std::vector<Wide_Child> largest_first(const std::vector<
 } // namespace
 
 // From the root down, each wide node takes the children that Sah_Collapse (a mesh's tree) or
-// largest_first (a scene's) chooses; a leaf is a child slot with count > 0.
+// largest_first (a scene's) chooses, the largest box in the first slot; a leaf is a child slot with
+// count > 0.
 template<typename Primitive> Wide_BVH widen(const BVH<Primitive>& bvh) {
 	Wide_BVH wide;
 	if (bvh.primitives.empty() || bvh.nodes.empty()) return wide;
@@ -72,6 +73,11 @@ template<typename Primitive> Wide_BVH widen(const BVH<Primitive>& bvh) {
 		auto [binary, index] = todo.back();
 		todo.pop_back();
 		std::vector<Wide_Child> children = collapse ? collapse->children(binary) : largest_first(bvh.nodes, binary);
+		// The largest box first: an any-hit query enters the children it hits in slot order, and
+		// the larger of two boxes a ray crosses more likely holds what stops it.
+		std::stable_sort(children.begin(), children.end(), [&](const Wide_Child& a, const Wide_Child& b) {
+			return bvh.nodes[a.binary].bbox.surface_area() > bvh.nodes[b.binary].bbox.surface_area();
+		});
 		Wide_Node node;
 		for (int slot = 0; slot < Wide_Node::WIDTH; slot++) { // unused slots: an empty box and UNUSED_SLOT
 			BBox box = slot < int(children.size()) ? bvh.nodes[children[slot].binary].bbox : BBox{};

@@ -117,8 +117,8 @@ template<bool ANY_HIT> struct Instance_Leaves {
 // (Lanes::hit_children), fetch those hit, go down into the nearest and keep the others on a stack,
 // with the t at which the ray enters them; at a leaf, leaves.visit(). The closest-hit query shrinks
 // the ray to each hit it finds; the any-hit query returns at the first, and takes the children hit
-// in slot order: any hit will do, so sorting them buys nothing (the answer is the same in any
-// order). Returns whether an any-hit query found a hit.
+// in slot order, the largest box first (widen()): any hit will do, so sorting them by distance buys
+// nothing (the answer is the same in any order). Returns whether an any-hit query found a hit.
 template<bool ANY_HIT, typename Lanes, typename Leaves>
 bool traverse(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
 	struct Child { // a wide node (count 0) or a leaf's primitives
@@ -165,8 +165,9 @@ bool traverse(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
 					child = hit(near);
 					continue;
 				}
-				if constexpr (ANY_HIT) { // any hit ends the query: no order needed
-					for (; mask != 0; mask &= mask - 1) stack[top++] = hit(__builtin_ctz(mask));
+				if constexpr (ANY_HIT) { // any hit ends the query: the children in slot order, largest first
+					for (; mask != 0; mask &= ~(1u << (31 - __builtin_clz(mask))))
+						stack[top++] = hit(31 - __builtin_clz(mask)); // the highest slot at the bottom
 					child = hit(near);
 					continue;
 				}
