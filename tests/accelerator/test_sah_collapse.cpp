@@ -26,7 +26,8 @@ double built_cost(const Wide_BVH& wide, float root_area) {
 	for (const Wide_Node& node : wide.nodes) {
 		for (int slot = 0; slot < WIDTH; slot++) {
 			if (node.first[slot] == Wide_Node::UNUSED_SLOT) continue;
-			BBox box{{node.min_x[slot], node.min_y[slot], node.min_z[slot]}, {node.max_x[slot], node.max_y[slot], node.max_z[slot]}};
+			BBox box{{node.min_x[slot], node.min_y[slot], node.min_z[slot]},
+			         {node.max_x[slot], node.max_y[slot], node.max_z[slot]}};
 			cost += box.surface_area() * (node.count[slot] > 0 ? (node.count[slot] + 3) / 4 * Sah_Collapse::PACK_COST
 			                                                  : Sah_Collapse::NODE_COST);
 		}

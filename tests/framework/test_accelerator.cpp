@@ -67,7 +67,8 @@ TEST_CASE("the accelerator breaks a tie as a triangle-by-triangle search does: t
 	std::mt19937 random(7);
 	std::uniform_real_distribution<float> offset(-0.3f, 0.3f);
 	for (int i = 0; i < 200; i++) {
-		Vec3 from{offset(random), offset(random), 2.0f}, through{offset(random) / 3.0f, offset(random) / 3.0f - 0.2f, 0.0f};
+		Vec3 from{offset(random), offset(random), 2.0f};
+		Vec3 through{offset(random) / 3.0f, offset(random) / 3.0f - 0.2f, 0.0f}; // inside the triangle
 		Ray ray(from, glm::normalize(through - from));
 		Trace first;
 		for (const Triangle& triangle : mesh.bvh.primitives) first = Trace::min(first, triangle.hit(ray));
