@@ -74,10 +74,14 @@ template<typename Primitive> Wide_BVH widen(const BVH<Primitive>& bvh) {
 		todo.pop_back();
 		std::vector<Wide_Child> children = collapse ? collapse->children(binary) : largest_first(bvh.nodes, binary);
 		// The largest box first: an any-hit query enters the children it hits in slot order, and
-		// the larger of two boxes a ray crosses more likely holds what stops it.
-		std::stable_sort(children.begin(), children.end(), [&](const Wide_Child& a, const Wide_Child& b) {
-			return bvh.nodes[a.binary].bbox.surface_area() > bvh.nodes[b.binary].bbox.surface_area();
-		});
+		// the larger of two boxes a ray crosses more likely holds what stops it. (A broken
+		// primitive's NaN area counts as 0, so that the order stays an order.)
+		auto area = [&](const Wide_Child& c) {
+			float a = bvh.nodes[c.binary].bbox.surface_area();
+			return a >= 0.0f ? a : 0.0f;
+		};
+		std::stable_sort(children.begin(), children.end(),
+		                 [&](const Wide_Child& a, const Wide_Child& b) { return area(a) > area(b); });
 		Wide_Node node;
 		for (int slot = 0; slot < Wide_Node::WIDTH; slot++) { // unused slots: an empty box and UNUSED_SLOT
 			BBox box = slot < int(children.size()) ? bvh.nodes[children[slot].binary].bbox : BBox{};
