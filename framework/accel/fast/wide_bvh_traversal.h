@@ -166,8 +166,11 @@ bool traverse(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
 					continue;
 				}
 				if constexpr (ANY_HIT) { // any hit ends the query: the children in slot order, largest first
-					for (; mask != 0; mask &= ~(1u << (31 - __builtin_clz(mask))))
-						stack[top++] = hit(31 - __builtin_clz(mask)); // the highest slot at the bottom
+					while (mask != 0) { // pushed from the highest slot down, so the lowest is popped next
+						int slot = 31 - __builtin_clz(mask);
+						stack[top++] = hit(slot);
+						mask &= ~(1u << slot);
+					}
 					child = hit(near);
 					continue;
 				}
