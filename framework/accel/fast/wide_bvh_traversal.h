@@ -224,27 +224,27 @@ Closest_Triangle closest_triangle(const BVH<Triangle>& bvh, const Wide_BVH& wide
 // Triangle::hit's arithmetic (reference/task2_shapes.cpp: the vertex normals weighted by 1 - u - v, u
 // and v, normalized; the point ray.at(t)), without testing the triangle again. Otherwise Triangle::hit
 // makes it; if that misses (the pack rounded otherwise), the query starts over with `exact`: every
-// candidate to Triangle::hit, and `best` becomes the triangle it finds. The record is one variable
-// returned all the way, so it is written where the caller wants it.
+// candidate to Triangle::hit, and `best` becomes the triangle it finds. The record is written into
+// `trace`, the one variable each query returns (so that it is made where the caller wants it: a
+// record built in a temporary and copied costs more than making it, the copy's loads waiting on
+// the temporary's stores).
 template<typename Lanes>
-Trace record(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, Closest_Triangle& best) {
+void record(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, Closest_Triangle& best, Trace& trace) {
 	const Triangle& triangle = bvh.primitives[best.primitive];
 	if constexpr (PACK_IS_EXACT) {
 		float u = best.u, v = best.v;
-		Trace trace;
 		trace.origin = ray.point;
 		trace.hit = true;
 		trace.distance = best.t;
 		trace.position = ray.at(best.t);
 		trace.normal = glm::normalize((1.0f - u - v) * triangle.v0.normal + u * triangle.v1.normal + v * triangle.v2.normal);
-		return trace;
+		return;
 	}
-	Trace trace = triangle.hit(ray);
+	trace = triangle.hit(ray);
 	if (!trace.hit) {
 		best = closest_triangle<Lanes>(bvh, wide, ray, true);
 		if (best.primitive != NONE) trace = bvh.primitives[best.primitive].hit(ray);
 	}
-	return trace;
 }
 
 // A scene's closest hit through its flat meshes (wide_bvh.h): the closest triangle of the flat
@@ -252,17 +252,21 @@ Trace record(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, Clo
 // it (Triangle::hit's, record(), then Instance::world_record, both in place).
 template<typename Lanes> Trace flat_hit(const BVH<Instance>& objects, const Flat_Meshes& flat, const Ray& ray) {
 	Closest_Triangle nearest = closest_triangle<Lanes>(flat.triangles, flat.wide, ray, false);
-	Instance_Leaves<false> others{objects, Trace{}};
+	Trace trace;
 	if (!flat.others.nodes.empty()) {
+		Instance_Leaves<false> others{objects, Trace{}};
 		Ray rest = ray;
 		rest.dist_bounds.y = std::min(rest.dist_bounds.y, nearest.t);
 		traverse<false, Lanes>(flat.others, rest, others);
-		if (others.closest.hit) return others.closest;
+		if (others.closest.hit) {
+			trace = others.closest;
+			return trace;
+		}
 	}
-	if (nearest.primitive == NONE) return Trace{};
-	Trace trace = record<Lanes>(flat.triangles, flat.wide, ray, nearest);
-	if (nearest.primitive == NONE) return Trace{};
-	objects.primitives[flat.owner[nearest.primitive]].world_record(ray, trace);
+	if (nearest.primitive == NONE) return trace;
+	record<Lanes>(flat.triangles, flat.wide, ray, nearest, trace);
+	if (nearest.primitive == NONE) trace = Trace{};
+	else objects.primitives[flat.owner[nearest.primitive]].world_record(ray, trace);
 	return trace;
 }
 
@@ -278,8 +282,9 @@ template<typename Lanes> bool flat_occluded(const BVH<Instance>& objects, const 
 template<typename Lanes> struct Queries {
 	static Trace hit_triangles(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray) {
 		Closest_Triangle best = closest_triangle<Lanes>(bvh, wide, ray, false);
-		if (best.primitive == NONE) return Trace{};
-		return record<Lanes>(bvh, wide, ray, best);
+		Trace trace;
+		if (best.primitive != NONE) record<Lanes>(bvh, wide, ray, best, trace);
+		return trace;
 	}
 	static bool triangles_occluded(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray) {
 		Triangle_Leaves<true> leaves{bvh, wide, false};
