@@ -39,7 +39,9 @@ Wide_BVH leaves_node(const BVH<Instance>& objects, const std::vector<uint32_t>& 
 } // namespace
 
 std::shared_ptr<const Flat_Meshes> flatten(const BVH<Instance>& objects) {
-	constexpr size_t LEAF_SIZE = 4; // as Tri_Mesh's
+	// A triangle a leaf: the fold (sah_collapse.h) then chooses every leaf. With four, as Tri_Mesh's,
+	// the Cornell box's floor and a wall shared a leaf whose box was the whole room.
+	constexpr size_t LEAF_SIZE = 1;
 	std::vector<Triangle> triangles;
 	std::map<std::string, uint32_t> owner_of; // a triangle's key -> its object
 	std::vector<uint32_t> others;
