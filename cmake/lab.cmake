@@ -2,7 +2,11 @@
 add_library(lab_options INTERFACE)
 target_compile_features(lab_options INTERFACE cxx_std_17)
 set(LAB_WARNINGS -Wall -Wextra -Wpedantic -Wno-unused-parameter)
-target_compile_options(lab_options INTERFACE ${LAB_WARNINGS})
+# No code of the lab reads errno after a math function, so std::sqrt and its kin need not set it:
+# a square root is then one instruction, not one followed by a test and a branch to the library.
+# The results are the same, bit for bit (bench/README.md, "Issue 37: the Cornell box").
+set(LAB_CODE_GENERATION -fno-math-errno)
+target_compile_options(lab_options INTERFACE ${LAB_WARNINGS} ${LAB_CODE_GENERATION})
 
 # LAB_LIBCXX: the build uses clang's libc++ (-stdlib=libc++), not GCC's standard library, which
 # Debian's compiled C++ libraries were built with (framework/CMakeLists.txt, cmake/catch2.cmake).
