@@ -31,7 +31,8 @@ Spectrum radiance_along(const Pathtracer& pt, RNG& rng, const Ray& ray, const Ar
 // compiled into it (the light sample, the shadow ray's setup, the BSDF, the random numbers), so that a
 // vertex runs as one stretch of code, without calls that pass vectors through memory (7 % of a
 // Cornell box render: bench/README.md, "Issue 37: the Cornell box").
-[[gnu::flatten]] Spectrum shade_nee(const Pathtracer& pt, RNG& rng, const Ray& ray, const Trace& hit, const Arrival& arrival) {
+[[gnu::flatten]] Spectrum shade_nee(const Pathtracer& pt, RNG& rng, const Ray& ray, const Trace& hit,
+                                    const Arrival& arrival) {
 	const Material& material = pt.scene.materials[hit.material];
 	Frame frame = Frame::from_normal(hit.normal);
 	Vec3 out_dir = -glm::normalize(ray.dir);
