@@ -224,10 +224,10 @@ Closest_Triangle closest_triangle(const BVH<Triangle>& bvh, const Wide_BVH& wide
 // Triangle::hit's arithmetic (reference/task2_shapes.cpp: the vertex normals weighted by 1 - u - v, u
 // and v, normalized; the point ray.at(t)), without testing the triangle again. Otherwise Triangle::hit
 // makes it; if that misses (the pack rounded otherwise), the query starts over with `exact`: every
-// candidate to Triangle::hit, and `best` becomes the triangle it finds. The record is written into
-// `trace`, the one variable each query returns (so that it is made where the caller wants it: a
-// record built in a temporary and copied costs more than making it, the copy's loads waiting on
-// the temporary's stores).
+// candidate to Triangle::hit, and `best` becomes the triangle it finds (NONE and a miss, Trace{},
+// if it finds none). The record is written into `trace`, the one variable each query returns (so
+// that it is made where the caller wants it: a record built in a temporary and copied costs more
+// than making it, the copy's loads waiting on the temporary's stores).
 template<typename Lanes>
 void record(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, Closest_Triangle& best, Trace& trace) {
 	const Triangle& triangle = bvh.primitives[best.primitive];
@@ -243,7 +243,7 @@ void record(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, Clos
 	trace = triangle.hit(ray);
 	if (!trace.hit) {
 		best = closest_triangle<Lanes>(bvh, wide, ray, true);
-		if (best.primitive != NONE) trace = bvh.primitives[best.primitive].hit(ray);
+		trace = best.primitive != NONE ? bvh.primitives[best.primitive].hit(ray) : Trace{};
 	}
 }
 
@@ -265,8 +265,7 @@ template<typename Lanes> Trace flat_hit(const BVH<Instance>& objects, const Flat
 	}
 	if (nearest.primitive == NONE) return trace;
 	record<Lanes>(flat.triangles, flat.wide, ray, nearest, trace);
-	if (nearest.primitive == NONE) trace = Trace{};
-	else objects.primitives[flat.owner[nearest.primitive]].world_record(ray, trace);
+	if (trace.hit) objects.primitives[flat.owner[nearest.primitive]].world_record(ray, trace);
 	return trace;
 }
 
