@@ -40,6 +40,14 @@ inline double timed_parallel_for(size_t count, unsigned threads, const std::func
 	return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// Makes `value` count as used: the compiler must finish computing it and may not drop any part of
+// it. A timed method whose result is only partly read is otherwise timed without the rest: once
+// -fno-math-errno let a square root go unused, Embree's record (bench/embree_bvh.cpp: the hit's
+// normal) was compiled away wherever only the hit's distance was kept.
+template<typename T> inline void keep(const T& value) {
+	asm volatile("" : : "m"(value) : "memory");
+}
+
 // The middle value; for an even count, the mean of the two middle values.
 inline double median(std::vector<double> values) {
 	std::sort(values.begin(), values.end());
