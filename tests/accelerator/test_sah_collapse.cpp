@@ -147,7 +147,7 @@ TEST_CASE("the wide tree of a mesh holds every triangle once, in leaves of conse
 				reached++;
 				continue;
 			}
-			uint32_t start = node.start[slot], count = node.count[slot];
+			uint32_t start = wide.triangle_packs[node.first[slot]].index[0], count = node.count[slot];
 			INFO("a leaf of " << count << " triangles");
 			CHECK(count <= Sah_Collapse::MAX_LEAF_TRIANGLES);
 			leaves.push_back({start, count});

@@ -29,29 +29,28 @@ namespace {
 using Float8 = float __attribute__((vector_size(32)));
 using Int8 = int32_t __attribute__((vector_size(32)));
 
+// Eight floats at `values`, 32-byte aligned (a Wide_Node's arrays are).
 Float8 load8(const float* values) {
-	Float8 v;
-	std::memcpy(&v, values, sizeof v);
-	return v;
+	using Aligned_Floats = float __attribute__((vector_size(32), may_alias));
+	return *reinterpret_cast<const Aligned_Floats*>(values);
 }
 
 // The node test: the lab's slab test (handouts/task3_bvh.md §3.1) of all eight children at once,
 // otherwise as Four_Lanes (four_wide_tests.h), which it answers bit for bit.
 struct Eight_Lanes {
 	[[gnu::always_inline]] static unsigned hit_children(const Wide_Node& node, const four_wide::Slab_Ray& ray,
-	                                                    Vec2 bounds, float (&t_enter)[Wide_Node::WIDTH]) {
+	                                                    Vec2 bounds, float (&t_enter)[Wide_Node::WIDTH],
+	                                                    float (&t_exit)[Wide_Node::WIDTH]) {
 		static_assert(Wide_Node::WIDTH == 8);
-		const float* lo[3] = {node.min_x, node.min_y, node.min_z};
-		const float* hi[3] = {node.max_x, node.max_y, node.max_z};
 		Float8 enter = Float8{} + bounds.x, exit = Float8{} + bounds.y;
 		for (int axis = 0; axis < 3; axis++) {
-			bool negative = ray.negative[axis];
-			Float8 t_near = (load8(negative ? hi[axis] : lo[axis]) - ray.point[axis]) * ray.inv_dir[axis];
-			Float8 t_far = (load8(negative ? lo[axis] : hi[axis]) - ray.point[axis]) * ray.inv_dir[axis];
+			Float8 t_near = (load8(node.*ray.near[axis]) - ray.point[axis]) * ray.inv_dir[axis];
+			Float8 t_far = (load8(node.*ray.far[axis]) - ray.point[axis]) * ray.inv_dir[axis];
 			enter = t_near > enter ? t_near : enter; // (a NaN leaves the interval unchanged)
 			exit = t_far < exit ? t_far : exit;
 		}
 		std::memcpy(t_enter, &enter, sizeof enter);
+		std::memcpy(t_exit, &exit, sizeof exit);
 		Int8 first;
 		std::memcpy(&first, node.first, sizeof first);
 		Int8 hit = (enter <= exit) & (first != Int8{} + int32_t(Wide_Node::UNUSED_SLOT));

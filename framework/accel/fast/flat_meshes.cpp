@@ -30,7 +30,6 @@ Wide_BVH leaves_node(const BVH<Instance>& objects, const std::vector<uint32_t>& 
 		node.max_x[slot] = box.max.x, node.max_y[slot] = box.max.y, node.max_z[slot] = box.max.z;
 		node.first[slot] = used ? chosen[slot] : Wide_Node::UNUSED_SLOT;
 		node.count[slot] = used ? 1 : 0;
-		node.start[slot] = used ? chosen[slot] : 0;
 	}
 	wide.nodes.push_back(node);
 	return wide;

@@ -29,39 +29,48 @@ inline Float4 load4(const float* values) {
 	return v;
 }
 
-// A ray prepared for many slab tests: the reciprocal direction and its signs, computed once.
+// A ray prepared for many slab tests, computed once: the reciprocal direction, and on each axis the
+// bounds of a Wide_Node that the ray meets first (`near`: min_x where it points to +x, max_x where
+// to -x) and last (`far`), so that a node's test loads them without asking the direction's sign.
 struct Slab_Ray {
+	using Bounds = float (Wide_Node::*)[Wide_Node::WIDTH]; // min_x, ..., max_z
 	explicit Slab_Ray(const Ray& ray) : point(ray.point) {
+		constexpr Bounds lower[3] = {&Wide_Node::min_x, &Wide_Node::min_y, &Wide_Node::min_z};
+		constexpr Bounds upper[3] = {&Wide_Node::max_x, &Wide_Node::max_y, &Wide_Node::max_z};
 		Float4 inverse = 1.0f / Float4{ray.dir.x, ray.dir.y, ray.dir.z, 1.0f}; // three divisions in one
-		for (int axis = 0; axis < 3; axis++) inv_dir[axis] = inverse[axis], negative[axis] = inverse[axis] < 0.0f;
+		for (int axis = 0; axis < 3; axis++) {
+			inv_dir[axis] = inverse[axis];
+			bool negative = inverse[axis] < 0.0f;
+			near[axis] = negative ? upper[axis] : lower[axis];
+			far[axis] = negative ? lower[axis] : upper[axis];
+		}
 	}
 	Vec3 point;
 	Vec3 inv_dir; // +-inf where a direction component is +-0
-	bool negative[3];
+	Bounds near[3], far[3];
 };
 
 // The node test of the four-wide queries (wide_bvh_traversal.h): the slab test of a wide node's
 // children, four at once.
 struct Four_Lanes {
 	// Returns a bit per child hit within `bounds` (never an unused slot: its box is empty, but a ray
-	// with a NaN direction overlaps every box), and where the ray enters each child's box.
+	// with a NaN direction overlaps every box), and where the ray enters and leaves each child's box.
 	[[gnu::always_inline]] static unsigned hit_children(const Wide_Node& node, const Slab_Ray& ray, Vec2 bounds,
-	                                                    float (&t_enter)[Wide_Node::WIDTH]) {
-		const float* lo[3] = {node.min_x, node.min_y, node.min_z};
-		const float* hi[3] = {node.max_x, node.max_y, node.max_z};
+	                                                    float (&t_enter)[Wide_Node::WIDTH],
+	                                                    float (&t_exit)[Wide_Node::WIDTH]) {
 		unsigned mask = 0;
 		for (int group = 0; group < Wide_Node::WIDTH; group += 4) { // four children at a time
 			Float4 enter = Float4{} + bounds.x, exit = Float4{} + bounds.y;
 			for (int axis = 0; axis < 3; axis++) {
-				bool negative = ray.negative[axis];
-				Float4 t_near = (load4((negative ? hi[axis] : lo[axis]) + group) - ray.point[axis]) * ray.inv_dir[axis];
-				Float4 t_far = (load4((negative ? lo[axis] : hi[axis]) + group) - ray.point[axis]) * ray.inv_dir[axis];
+				Float4 t_near = (load4(node.*ray.near[axis] + group) - ray.point[axis]) * ray.inv_dir[axis];
+				Float4 t_far = (load4(node.*ray.far[axis] + group) - ray.point[axis]) * ray.inv_dir[axis];
 				// A NaN (0 * inf, a ray inside a slab's plane) fails the comparison and leaves the
 				// interval unchanged.
 				enter = t_near > enter ? t_near : enter;
 				exit = t_far < exit ? t_far : exit;
 			}
 			std::memcpy(t_enter + group, &enter, sizeof enter);
+			std::memcpy(t_exit + group, &exit, sizeof exit);
 			Int4 first;
 			std::memcpy(&first, node.first + group, sizeof first);
 			Int4 hit = (enter <= exit) & (first != Int4{} + int32_t(Wide_Node::UNUSED_SLOT));

@@ -13,7 +13,7 @@
 // The binary tree folded into nodes of up to eight children (for a mesh, the children and leaves of
 // least SAH cost: sah_collapse.h), whose boxes one 8-wide slab test handles, or two 4-wide ones
 // (wide_bvh_queries.h).
-struct alignas(64) Wide_Node { // 288 bytes, padded to 320: five cache lines
+struct alignas(64) Wide_Node { // 256 bytes: four cache lines, all read by a node's test
 	static constexpr int WIDTH = 8; // children per node
 	// The children's boxes, one array per bound and axis, so that one vector instruction handles
 	// the same bound of four or eight children. An unused slot holds an empty box.
@@ -23,8 +23,6 @@ struct alignas(64) Wide_Node { // 288 bytes, padded to 320: five cache lines
 	uint32_t count[WIDTH]; // leaf: its number of primitives (>= 1, in a BVH<Triangle> up to
 	                       // Sah_Collapse::MAX_LEAF_TRIANGLES or a binary leaf's); interior child or unused: 0
 	                       // (an unused slot has first = UNUSED_SLOT and an empty box)
-	uint32_t start[WIDTH]; // leaf: its first primitive (as BVH::Node::start); otherwise 0. In the last
-	                       // line, read only by closest-hit queries, to fetch a leaf's triangles.
 
 	static constexpr uint32_t UNUSED_SLOT = ~0u;
 };

@@ -87,14 +87,14 @@ template<typename Primitive> Wide_BVH widen(const BVH<Primitive>& bvh) {
 			BBox box = slot < int(children.size()) ? bvh.nodes[children[slot].binary].bbox : BBox{};
 			node.min_x[slot] = box.min.x, node.min_y[slot] = box.min.y, node.min_z[slot] = box.min.z;
 			node.max_x[slot] = box.max.x, node.max_y[slot] = box.max.y, node.max_z[slot] = box.max.z;
-			node.first[slot] = Wide_Node::UNUSED_SLOT, node.count[slot] = 0, node.start[slot] = 0;
+			node.first[slot] = Wide_Node::UNUSED_SLOT, node.count[slot] = 0;
 			if (slot >= int(children.size())) continue;
 			const auto& child = bvh.nodes[children[slot].binary];
 			if (children[slot].leaf) {
 				node.first[slot] = uint32_t(child.start);
 				if constexpr (std::is_same_v<Primitive, Triangle>)
 					node.first[slot] = pack_triangles(bvh.primitives, child.start, child.size, wide.triangle_packs);
-				node.count[slot] = uint32_t(child.size), node.start[slot] = uint32_t(child.start);
+				node.count[slot] = uint32_t(child.size);
 			} else {
 				node.first[slot] = uint32_t(wide.nodes.size());
 				wide.nodes.emplace_back();

@@ -22,9 +22,6 @@ using namespace four_wide;
 
 constexpr uint32_t NONE = ~0u;
 
-// The lines of a Wide_Node that a node's test reads: the boxes, `first` and `count` (not `start`).
-constexpr size_t NODE_TEST_BYTES = offsetof(Wide_Node, start);
-
 // Starts loading the cache lines of `size` bytes at `start` before they are used.
 [[gnu::always_inline]] inline void prefetch(const void* start, size_t size) {
 	const char* bytes = static_cast<const char*>(start);
@@ -47,21 +44,20 @@ template<bool ANY_HIT> struct Triangle_Leaves {
 	float u = 0, v = 0; // and its barycentrics (where the pack is exact, Triangle::hit's)
 
 	// What a node's test fetches ahead for a leaf it finds (the leaves found are then fetched at
-	// once): its packs, consecutive and rarely in cache, and for the closest hit the first pack's
-	// triangles, one of which the record most likely reads: fetched with the pack, it arrives while
-	// the pack is tested, not after.
+	// once): its packs, consecutive and rarely in cache.
 	[[gnu::always_inline]] void prefetch_leaf(const Wide_Node& node, int slot) const {
 		uint32_t packs = (node.count[slot] + 3) / 4;
 		prefetch(&wide.triangle_packs[node.first[slot]], packs * sizeof(Triangle_Pack));
-		if (!ANY_HIT) {
-			uint32_t triangles = std::min<uint32_t>(node.count[slot], 4); // the first pack's
-			prefetch(&bvh.primitives[node.start[slot]], triangles * sizeof(Triangle));
-		}
 	}
 
 	// Tests the leaf's triangles against r, lowering r.dist_bounds.y to each closer hit; returns
 	// true where an any-hit query is answered.
 	[[gnu::always_inline]] bool visit(uint32_t first_pack, uint32_t count, Ray& r) {
+		if (!ANY_HIT) { // the first pack's triangles, one of which the record most likely reads:
+			            // fetched now, they arrive while the packs are tested, not after
+			const Triangle_Pack& pack = wide.triangle_packs[first_pack];
+			prefetch(&bvh.primitives[pack.index[0]], std::min<uint32_t>(count, 4) * sizeof(Triangle));
+		}
 		for (uint32_t p = first_pack; p < first_pack + (count + 3) / 4; p++) {
 			const Triangle_Pack& pack = wide.triangle_packs[p];
 			Pack_Hits hits = hit_pack(pack, r);
@@ -116,9 +112,11 @@ template<bool ANY_HIT> struct Instance_Leaves {
 // Front to back (handouts/task3_bvh.md §3.3) over the wide nodes: test a node's children
 // (Lanes::hit_children), fetch those hit, go down into the nearest and keep the others on a stack,
 // with the t at which the ray enters them; at a leaf, leaves.visit(). The closest-hit query shrinks
-// the ray to each hit it finds; the any-hit query returns at the first, and takes the children hit
-// in slot order, the largest box first (widen()): any hit will do, so sorting them by distance buys
-// nothing (the answer is the same in any order). Returns whether an any-hit query found a hit.
+// the ray to each hit it finds; the any-hit query returns at the first, and takes first the child
+// hit whose box holds the longest piece of the ray (the likeliest to hold a hit: a surface spread
+// through a box is met in proportion to the length crossed), then the others in slot order, the
+// largest box first (widen()): any hit will do, so sorting them all buys nothing (the answer is the
+// same in any order). Returns whether an any-hit query found a hit.
 template<bool ANY_HIT, typename Lanes, typename Leaves>
 bool traverse(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
 	struct Child { // a wide node (count 0) or a leaf's primitives
@@ -144,8 +142,8 @@ bool traverse(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
 		} else {
 			const Wide_Node& node = wide.nodes[child.first];
 			constexpr int WIDTH = Wide_Node::WIDTH;
-			float t_enter[WIDTH];
-			unsigned mask = Lanes::hit_children(node, slab_ray, r.dist_bounds, t_enter);
+			float t_enter[WIDTH], t_exit[WIDTH];
+			unsigned mask = Lanes::hit_children(node, slab_ray, r.dist_bounds, t_enter, t_exit);
 			if (mask != 0) {
 				if (top + WIDTH > capacity) { // a deep tree: the stack moves to the heap, twice as large
 					if (stack == local_stack) heap_stack.assign(local_stack, local_stack + top);
@@ -157,7 +155,7 @@ bool traverse(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
 				for (unsigned found = wide.fits_in_cache ? 0 : mask; found != 0; found &= found - 1) {
 					int slot = __builtin_ctz(found);
 					if (node.count[slot] > 0) leaves.prefetch_leaf(node, slot);
-					else prefetch(&wide.nodes[node.first[slot]], NODE_TEST_BYTES);
+					else prefetch(&wide.nodes[node.first[slot]], sizeof(Wide_Node));
 				}
 				int near = __builtin_ctz(mask);
 				mask &= mask - 1;
@@ -165,13 +163,20 @@ bool traverse(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
 					child = hit(near);
 					continue;
 				}
-				if constexpr (ANY_HIT) { // any hit ends the query: the children in slot order, largest first
-					while (mask != 0) { // pushed from the highest slot down, so the lowest is popped next
-						int slot = 31 - __builtin_clz(mask);
-						stack[top++] = hit(slot);
-						mask &= ~(1u << slot);
+				if constexpr (ANY_HIT) {
+					// Any hit ends the query: the longest crossing first, then the others in slot order.
+					int longest = near;
+					for (unsigned others = mask; others != 0; others &= others - 1) {
+						int slot = __builtin_ctz(others);
+						if (t_exit[slot] - t_enter[slot] > t_exit[longest] - t_enter[longest]) longest = slot;
 					}
-					child = hit(near);
+					unsigned rest = (mask | 1u << near) & ~(1u << longest);
+					while (rest != 0) { // pushed from the highest slot down, so the lowest is popped next
+						int slot = 31 - __builtin_clz(rest);
+						stack[top++] = hit(slot);
+						rest &= ~(1u << slot);
+					}
+					child = hit(longest);
 					continue;
 				}
 				int far = __builtin_ctz(mask);
