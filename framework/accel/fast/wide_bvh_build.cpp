@@ -73,9 +73,10 @@ template<typename Primitive> Wide_BVH widen(const BVH<Primitive>& bvh) {
 		auto [binary, index] = todo.back();
 		todo.pop_back();
 		std::vector<Wide_Child> children = collapse ? collapse->children(binary) : largest_first(bvh.nodes, binary);
-		// The largest box first: an any-hit query enters the children it hits in slot order, and
-		// the larger of two boxes a ray crosses more likely holds what stops it. (A broken
-		// primitive's NaN area counts as 0, so that the order stays an order.)
+		// The largest box first: after the child it crosses longest, an any-hit query enters the
+		// children it hits in slot order, and the larger of two boxes a ray crosses more likely
+		// holds what stops it. (A broken primitive's NaN area counts as 0, so that the order stays
+		// an order.)
 		auto area = [&](const Wide_Child& c) {
 			float a = bvh.nodes[c.binary].bbox.surface_area();
 			return a >= 0.0f ? a : 0.0f;
