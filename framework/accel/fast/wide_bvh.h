@@ -13,7 +13,7 @@
 // The binary tree folded into nodes of up to eight children (for a mesh, the children and leaves of
 // least SAH cost: sah_collapse.h), whose boxes one 8-wide slab test handles, or two 4-wide ones
 // (wide_bvh_queries.h).
-struct alignas(64) Wide_Node { // 256 bytes: four cache lines, all read by a node's test
+struct alignas(64) Wide_Node {
 	static constexpr int WIDTH = 8; // children per node
 	// The children's boxes, one array per bound and axis, so that one vector instruction handles
 	// the same bound of four or eight children. An unused slot holds an empty box.
@@ -26,6 +26,7 @@ struct alignas(64) Wide_Node { // 256 bytes: four cache lines, all read by a nod
 
 	static constexpr uint32_t UNUSED_SLOT = ~0u;
 };
+static_assert(sizeof(Wide_Node) == 4 * 64, "a node's test reads all of it: four cache lines");
 
 // Four triangles of a leaf: vertex v0 and edges e1 = v1 - v0, e2 = v2 - v0, one array per
 // coordinate, so that one Möller–Trumbore test handles four. Lanes past the leaf's last triangle
