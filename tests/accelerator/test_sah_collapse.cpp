@@ -134,7 +134,8 @@ TEST_CASE("the wide tree of a mesh costs what Sah_Collapse says, and no other wa
 	}
 }
 
-TEST_CASE("the wide tree of a mesh holds every triangle once, in leaves of consecutive triangles and full packs",
+TEST_CASE("the wide tree of a mesh holds every triangle once, in leaves of consecutive triangles and full packs, "
+          "with their vertex normals beside them",
           "[framework][accelerator]") {
 	BVH<Triangle> bvh(load_obj("scenes/meshes/bunny_npm_lowres.obj"), 4);
 	Wide_BVH wide = widen(bvh);
@@ -155,6 +156,10 @@ TEST_CASE("the wide tree of a mesh holds every triangle once, in leaves of conse
 				const Triangle_Pack& pack = wide.triangle_packs[node.first[slot] + i / 4];
 				REQUIRE(pack.index[i % 4] == start + i);
 				REQUIRE(pack.v0[0][i % 4] == bvh.primitives[start + i].v0.position.x);
+				const Vec3* normals = wide.pack_normals[node.first[slot] + i / 4].normal[i % 4];
+				const Triangle& triangle = bvh.primitives[start + i];
+				REQUIRE((normals[0] == triangle.v0.normal && normals[1] == triangle.v1.normal &&
+				         normals[2] == triangle.v2.normal));
 			}
 		}
 	}

@@ -31,7 +31,8 @@ const Wide_Queries& chosen_queries() {
 namespace {
 
 size_t bytes_of(const Wide_BVH& wide) {
-	return wide.nodes.capacity() * sizeof(Wide_Node) + wide.triangle_packs.capacity() * sizeof(Triangle_Pack);
+	return wide.nodes.capacity() * sizeof(Wide_Node) + wide.triangle_packs.capacity() * sizeof(Triangle_Pack) +
+	       wide.pack_normals.capacity() * sizeof(Pack_Normals);
 }
 
 } // namespace

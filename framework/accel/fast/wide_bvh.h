@@ -36,12 +36,20 @@ struct alignas(32) Triangle_Pack { // 160 bytes, against 4 x 72 for the Triangle
 	uint32_t index[4]; // the triangle in BVH::primitives
 };
 
+// The vertex normals of a pack's triangles (lane i: triangle i's, at v0, v1, v2), the rest of what
+// a closest hit's record reads: kept beside the packs, one per pack, so that a closest-hit query
+// can fetch them when it finds a leaf, before it knows which triangle the ray meets.
+struct Pack_Normals { // 144 bytes
+	Vec3 normal[4][3];
+};
+
 struct Flat_Meshes;
 struct Wide_Queries;
 
 struct Wide_BVH {
 	std::vector<Wide_Node> nodes;          // nodes[0] is the root; empty without primitives
 	std::vector<Triangle_Pack> triangle_packs; // BVH<Triangle> only: each leaf's packs, consecutive
+	std::vector<Pack_Normals> pack_normals;    // BVH<Triangle> only: triangle_packs[i]'s in pack_normals[i]
 	// BVH<Instance> only, where the scene allows it (flat_meshes.cpp): its objects as Flat_Meshes,
 	// queried instead of `nodes`.
 	std::shared_ptr<const Flat_Meshes> flat;

@@ -11,14 +11,16 @@
 
 namespace {
 
-// Appends the packs of triangles[start, start + size) to `packs`; returns the index of the first.
-uint32_t pack_triangles(const std::vector<Triangle>& triangles, size_t start, size_t size,
-                        std::vector<Triangle_Pack>& packs) {
+// Appends the packs of triangles[start, start + size) to wide.triangle_packs, and their normals to
+// wide.pack_normals; returns the index of the first.
+uint32_t pack_triangles(const std::vector<Triangle>& triangles, size_t start, size_t size, Wide_BVH& wide) {
+	std::vector<Triangle_Pack>& packs = wide.triangle_packs;
 	uint32_t first = uint32_t(packs.size());
 	for (size_t i = 0; i < size; i++) {
 		if (i % 4 == 0) {
 			packs.emplace_back();
 			std::fill(std::begin(packs.back().index), std::end(packs.back().index), ~0u);
+			wide.pack_normals.emplace_back();
 		}
 		Triangle_Pack& pack = packs.back();
 		const Triangle& tri = triangles[start + i];
@@ -29,6 +31,8 @@ uint32_t pack_triangles(const std::vector<Triangle>& triangles, size_t start, si
 			pack.e2[axis][i % 4] = e2[axis];
 		}
 		pack.index[i % 4] = uint32_t(start + i);
+		Vec3* normals = wide.pack_normals.back().normal[i % 4];
+		normals[0] = tri.v0.normal, normals[1] = tri.v1.normal, normals[2] = tri.v2.normal;
 	}
 	return first;
 }
@@ -94,7 +98,7 @@ template<typename Primitive> Wide_BVH widen(const BVH<Primitive>& bvh) {
 			if (children[slot].leaf) {
 				node.first[slot] = uint32_t(child.start);
 				if constexpr (std::is_same_v<Primitive, Triangle>)
-					node.first[slot] = pack_triangles(bvh.primitives, child.start, child.size, wide.triangle_packs);
+					node.first[slot] = pack_triangles(bvh.primitives, child.start, child.size, wide);
 				node.count[slot] = uint32_t(child.size);
 			} else {
 				node.first[slot] = uint32_t(wide.nodes.size());

@@ -30,34 +30,33 @@ constexpr uint32_t NONE = ~0u;
 }
 
 // The leaves of a BVH<Triangle>: a pack's test decides its four triangles (hit_pack), and the
-// closest-hit query keeps the closest one's index, hit at r.dist_bounds.y; of triangles hit at the
-// same t, the lowest index, as Trace::min over BVH::primitives in order keeps it, so that the answer
-// does not depend on the wide tree's shape or the order its packs are tested in. With `exact` (the
-// fallback, see record()) or where the pack may round otherwise than Triangle::hit (fused
+// closest-hit query keeps the closest one's index and lane, hit at r.dist_bounds.y; of triangles hit
+// at the same t, the lowest index, as Trace::min over BVH::primitives in order keeps it, so that the
+// answer does not depend on the wide tree's shape or the order its packs are tested in. With `exact`
+// (the fallback, see record()) or where the pack may round otherwise than Triangle::hit (fused
 // multiply-add), the candidates go to Triangle::hit.
 template<bool ANY_HIT> struct Triangle_Leaves {
 	const BVH<Triangle>& bvh;
 	const Wide_BVH& wide;
 	bool exact;
 	uint32_t best = NONE; // closest hit: the closest triangle found so far, hit at t
+	uint32_t best_lane = 0; // and where the pack found it: pack * 4 + lane
 	float t = INF_F;
 	float u = 0, v = 0; // and its barycentrics (where the pack is exact, Triangle::hit's)
 
 	// What a node's test fetches ahead for a leaf it finds (the leaves found are then fetched at
-	// once): its packs, consecutive and rarely in cache.
+	// once): its packs, consecutive and rarely in cache, and for the closest hit the first pack's
+	// normals, which the record most likely reads (fetched now, they arrive while the packs are
+	// tested, not after; the other packs' too would cost more lines than they save).
 	[[gnu::always_inline]] void prefetch_leaf(const Wide_Node& node, int slot) const {
 		uint32_t packs = (node.count[slot] + 3) / 4;
 		prefetch(&wide.triangle_packs[node.first[slot]], packs * sizeof(Triangle_Pack));
+		if (!ANY_HIT) prefetch(&wide.pack_normals[node.first[slot]], sizeof(Pack_Normals));
 	}
 
 	// Tests the leaf's triangles against r, lowering r.dist_bounds.y to each closer hit; returns
 	// true where an any-hit query is answered.
 	[[gnu::always_inline]] bool visit(uint32_t first_pack, uint32_t count, Ray& r) {
-		if (!ANY_HIT) { // the first pack's triangles, one of which the record most likely reads:
-			            // fetched now, they arrive while the packs are tested, not after
-			const Triangle_Pack& pack = wide.triangle_packs[first_pack];
-			prefetch(&bvh.primitives[pack.index[0]], std::min<uint32_t>(count, 4) * sizeof(Triangle));
-		}
 		for (uint32_t p = first_pack; p < first_pack + (count + 3) / 4; p++) {
 			const Triangle_Pack& pack = wide.triangle_packs[p];
 			Pack_Hits hits = hit_pack(pack, r);
@@ -83,6 +82,7 @@ template<bool ANY_HIT> struct Triangle_Leaves {
 					// Closer (than an earlier lane too), or a tie that the lower index wins.
 					best = pack.index[lane], t = r.dist_bounds.y = hits.t[lane];
 					u = hits.u[lane], v = hits.v[lane];
+					best_lane = p * 4 + lane;
 				}
 			}
 		}
@@ -211,41 +211,43 @@ bool traverse(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
 }
 
 // The closest triangle hit with t in ray.dist_bounds, that t and its barycentrics (NONE and INF_F
-// for a miss).
+// for a miss), and where the packs hold it (pack * 4 + lane; where the pack is exact).
 struct Closest_Triangle {
 	uint32_t primitive;
 	float t, u, v;
+	uint32_t lane;
 };
 
 template<typename Lanes>
 Closest_Triangle closest_triangle(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, bool exact) {
 	Triangle_Leaves<false> leaves{bvh, wide, exact};
 	traverse<false, Lanes>(wide, ray, leaves);
-	return Closest_Triangle{leaves.best, leaves.t, leaves.u, leaves.v};
+	return Closest_Triangle{leaves.best, leaves.t, leaves.u, leaves.v, leaves.best_lane};
 }
 
 // The closest triangle's record (hit point, normal), bit for bit Triangle::hit's on the whole ray.
 // Where the pack is exact, its t, u and v are Triangle::hit's, and the record is made from them with
-// Triangle::hit's arithmetic (reference/task2_shapes.cpp: the vertex normals weighted by 1 - u - v, u
-// and v, normalized; the point ray.at(t)), without testing the triangle again. Otherwise Triangle::hit
-// makes it; if that misses (the pack rounded otherwise), the query starts over with `exact`: every
+// Triangle::hit's arithmetic (reference/task2_shapes.cpp: the vertex normals, here the pack's copy,
+// weighted by 1 - u - v, u and v, normalized; the point ray.at(t)), without testing or reading the
+// triangle again. Otherwise Triangle::hit makes it; if that misses (the pack rounded otherwise), the
+// query starts over with `exact`: every
 // candidate to Triangle::hit, and `best` becomes the triangle it finds (NONE and a miss, Trace{},
 // if it finds none). The record is written into `trace`, the one variable each query returns (so
 // that it is made where the caller wants it: a record built in a temporary and copied costs more
 // than making it, the copy's loads waiting on the temporary's stores).
 template<typename Lanes>
 void record(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, Closest_Triangle& best, Trace& trace) {
-	const Triangle& triangle = bvh.primitives[best.primitive];
 	if constexpr (PACK_IS_EXACT) {
 		float u = best.u, v = best.v;
+		const Vec3* normal = wide.pack_normals[best.lane / 4].normal[best.lane % 4]; // at v0, v1, v2
 		trace.origin = ray.point;
 		trace.hit = true;
 		trace.distance = best.t;
 		trace.position = ray.at(best.t);
-		trace.normal = glm::normalize((1.0f - u - v) * triangle.v0.normal + u * triangle.v1.normal + v * triangle.v2.normal);
+		trace.normal = glm::normalize((1.0f - u - v) * normal[0] + u * normal[1] + v * normal[2]);
 		return;
 	}
-	trace = triangle.hit(ray);
+	trace = bvh.primitives[best.primitive].hit(ray);
 	if (!trace.hit) {
 		best = closest_triangle<Lanes>(bvh, wide, ray, true);
 		trace = best.primitive != NONE ? bvh.primitives[best.primitive].hit(ray) : Trace{};
