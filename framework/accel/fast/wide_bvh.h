@@ -53,7 +53,7 @@ struct Wide_BVH {
 	// BVH<Instance> only, where the scene allows it (flat_meshes.cpp): its objects as Flat_Meshes,
 	// queried instead of `nodes`.
 	std::shared_ptr<const Flat_Meshes> flat;
-	// Small enough to stay in a core's first-level cache (32 KiB, the triangles included): its
+	// Small enough to stay in a core's first-level cache (32 KiB, the normals included): its
 	// queries then fetch nothing ahead.
 	bool fits_in_cache = false;
 	// The accelerator's: its queries, for the vector width chosen (wide_bvh_queries.h).

@@ -111,8 +111,9 @@ template<typename Primitive> Wide_BVH widen(const BVH<Primitive>& bvh) {
 	// The vectors grew by doubling: give back the room they do not use.
 	wide.nodes.shrink_to_fit();
 	wide.triangle_packs.shrink_to_fit();
-	size_t bytes = wide.nodes.size() * sizeof(Wide_Node) + wide.triangle_packs.size() * sizeof(Triangle_Pack);
-	if constexpr (std::is_same_v<Primitive, Triangle>) bytes += bvh.primitives.size() * sizeof(Triangle);
+	wide.pack_normals.shrink_to_fit();
+	size_t bytes = wide.nodes.size() * sizeof(Wide_Node) + wide.triangle_packs.size() * sizeof(Triangle_Pack) +
+	               wide.pack_normals.size() * sizeof(Pack_Normals);
 	wide.fits_in_cache = bytes <= 32 * 1024;
 	return wide;
 }
