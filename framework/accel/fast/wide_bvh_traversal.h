@@ -115,8 +115,8 @@ template<bool ANY_HIT> struct Instance_Leaves {
 // the ray to each hit it finds; the any-hit query returns at the first, and takes first the child
 // hit whose box holds the longest piece of the ray (the likeliest to hold a hit: a surface spread
 // through a box is met in proportion to the length crossed), then the others in slot order, the
-// largest box first (widen()): any hit will do, so sorting them all buys nothing (the answer is the
-// same in any order). Returns whether an any-hit query found a hit.
+// largest box first (widen()): any hit will do (the answer is the same in any order), and sorting
+// them all costs more than it saves. Returns whether an any-hit query found a hit.
 template<bool ANY_HIT, typename Lanes, typename Leaves>
 bool traverse(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
 	struct Child { // a wide node (count 0) or a leaf's primitives
