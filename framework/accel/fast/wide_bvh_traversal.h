@@ -65,12 +65,13 @@ template<bool ANY_HIT> struct Triangle_Leaves {
 			if (exact) hits.hit = 0;
 			undecided &= ~hits.hit;
 			for (unsigned lanes = undecided; lanes != 0; lanes &= lanes - 1) {
-				uint32_t i = pack.index[__builtin_ctz(lanes)];
+				int lane = __builtin_ctz(lanes);
+				uint32_t i = pack.index[lane];
 				Trace trace = bvh.primitives[i].hit(r);
 				if (!trace.hit) continue;
 				if (ANY_HIT) return true;
 				if (trace.distance == t && i > best) continue; // a tie: the lower index wins
-				best = i, t = r.dist_bounds.y = trace.distance;
+				best = i, best_lane = p * 4 + lane, t = r.dist_bounds.y = trace.distance;
 			}
 			for (unsigned lanes = hits.hit; lanes != 0; lanes &= lanes - 1) {
 				int lane = __builtin_ctz(lanes);
@@ -80,9 +81,8 @@ template<bool ANY_HIT> struct Triangle_Leaves {
 					if (PACK_IS_EXACT || bvh.primitives[pack.index[lane]].hit(r).hit) return true;
 				} else if (hits.t[lane] < t || (hits.t[lane] == t && pack.index[lane] < best)) {
 					// Closer (than an earlier lane too), or a tie that the lower index wins.
-					best = pack.index[lane], t = r.dist_bounds.y = hits.t[lane];
+					best = pack.index[lane], best_lane = p * 4 + lane, t = r.dist_bounds.y = hits.t[lane];
 					u = hits.u[lane], v = hits.v[lane];
-					best_lane = p * 4 + lane;
 				}
 			}
 		}
@@ -211,7 +211,7 @@ bool traverse(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
 }
 
 // The closest triangle hit with t in ray.dist_bounds, that t and its barycentrics (NONE and INF_F
-// for a miss), and where the packs hold it (pack * 4 + lane; where the pack is exact).
+// for a miss), and where the packs hold it (pack * 4 + lane).
 struct Closest_Triangle {
 	uint32_t primitive;
 	float t, u, v;
@@ -230,11 +230,11 @@ Closest_Triangle closest_triangle(const BVH<Triangle>& bvh, const Wide_BVH& wide
 // Triangle::hit's arithmetic (reference/task2_shapes.cpp: the vertex normals, here the pack's copy,
 // weighted by 1 - u - v, u and v, normalized; the point ray.at(t)), without testing or reading the
 // triangle again. Otherwise Triangle::hit makes it; if that misses (the pack rounded otherwise), the
-// query starts over with `exact`: every
-// candidate to Triangle::hit, and `best` becomes the triangle it finds (NONE and a miss, Trace{},
-// if it finds none). The record is written into `trace`, the one variable each query returns (so
-// that it is made where the caller wants it: a record built in a temporary and copied costs more
-// than making it, the copy's loads waiting on the temporary's stores).
+// query starts over with `exact`: every candidate to Triangle::hit, and `best` becomes the triangle
+// it finds (NONE and a miss, Trace{}, if it finds none). The record is written into `trace`, the one
+// variable each query returns (so that it is made where the caller wants it: a record built in a
+// temporary and copied costs more than making it, the copy's loads waiting on the temporary's
+// stores).
 template<typename Lanes>
 void record(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, Closest_Triangle& best, Trace& trace) {
 	if constexpr (PACK_IS_EXACT) {
