@@ -41,8 +41,9 @@ bool same(const Trace& a, const Trace& b) {
 }
 
 // Counts rays on which the BVH and brute force disagree (hit or miss, or distance), allowing the
-// BVH to skip hits that lie outside their triangle's box. Both queries of the mesh count: the
-// framework's (Tri_Mesh::hit, through the fast accelerator) and task 3's BVH::hit alone.
+// BVH to skip hits that lie outside their triangle's box. Every query of the mesh counts: the
+// framework's (Tri_Mesh::hit, through the fast accelerator), task 3's BVH::hit alone, and the
+// accelerator's any hit (an occlusion query), which must be blocked exactly where Tri_Mesh::hit hits.
 Stress_Count compare(const std::vector<Triangle>& tris, const std::function<Ray(RNG&)>& make_ray, int rays,
                      uint64_t seed) {
 	Tri_Mesh mesh(std::vector<Triangle>(tris), 4);
@@ -52,10 +53,11 @@ Stress_Count compare(const std::vector<Triangle>& tris, const std::function<Ray(
 	for (int i = 0; i < rays; i++) {
 		Ray ray = make_ray(rng);
 		Trace expected = brute_force(tris, ray), got = mesh.hit(ray), alone = mesh.bvh.hit(ray);
+		bool blocked = mesh.accelerator.occluded(mesh.bvh, ray);
 		auto differs = [&](const Trace& t) { return !same(t, expected) && !same(t, brute_force_in_boxes(tris, ray)); };
-		count.add(differs(got) || differs(alone), [&] {
+		count.add(differs(got) || differs(alone) || blocked != got.hit, [&] {
 			return stress::show(ray) + ": brute force " + show(expected) + ", Tri_Mesh::hit " + show(got) +
-			       ", BVH::hit " + show(alone);
+			       ", BVH::hit " + show(alone) + ", Accelerator::occluded " + (blocked ? "blocked" : "not blocked");
 		});
 	}
 	return count;
@@ -176,23 +178,23 @@ TEST_CASE("Stress: a BVH over 10^6 identical triangles builds and hits like one 
 }
 
 TEST_CASE("Stress: BVH equals brute force on a tree dozens of levels deep", "[stress][task3]") {
-	// 780 parallel triangles in the planes x = 1e-37 * 1.25^k, spread over float's whole range:
+	// 950 parallel triangles in the planes x = 1e-37 * 1.2^k, spread over float's whole range:
 	// binned SAH splits off a dozen at a time, 66 levels deep, and a ray along the row overlaps the
-	// boxes of everything ahead of it, so the traversal keeps some 70 children pending (more than
-	// the fast accelerator's stack holds before it moves to the heap). The last ten triangles face the
+	// boxes of everything ahead of it, so the traversal keeps some 110 children waiting (more than
+	// the 64 the fast accelerator's stack holds before it moves to the heap). The last ten triangles face the
 	// other way (they cover y + z >= 1, the others y + z <= 1): a ray with y + z > 1 passes by every
 	// triangle until them, so its hit is in a child that waited at the bottom of the stack.
 	std::vector<Triangle> tris;
-	for (int k = 0; k < 780; k++) {
-		float x = float(1e-37 * std::pow(1.25, k));
-		if (k < 770) tris.push_back(flat_triangle(Vec3{x, -1.0f, -1.0f}, Vec3{x, 2.0f, -1.0f}, Vec3{x, -1.0f, 2.0f}));
+	for (int k = 0; k < 950; k++) {
+		float x = float(1e-37 * std::pow(1.2, k));
+		if (k < 940) tris.push_back(flat_triangle(Vec3{x, -1.0f, -1.0f}, Vec3{x, 2.0f, -1.0f}, Vec3{x, -1.0f, 2.0f}));
 		else tris.push_back(flat_triangle(Vec3{x, 2.0f, 2.0f}, Vec3{x, -1.0f, 2.0f}, Vec3{x, 2.0f, -1.0f}));
 	}
 	auto ray = [](RNG& rng) {
-		float x = float(1e-37 * std::pow(1.25, 781.0 * rng.unit() - 1.0)); // somewhere along the row
+		float x = float(1e-37 * std::pow(1.2, 951.0 * rng.unit() - 1.0)); // somewhere along the row
 		float offset = rng.coin_flip(0.5f) ? -0.5f : 1.0f; // y + z < 1 or y + z > 1
 		Vec3 origin{x, offset + 0.5f * rng.unit(), offset + 0.5f * rng.unit()};
 		return Ray(origin, Vec3{rng.coin_flip(0.5f) ? 1.0f : -1.0f, 0.0f, 0.0f});
 	};
-	require_agreement(compare(tris, ray, 2000, 7), "780 triangles in a row, a deep tree");
+	require_agreement(compare(tris, ray, 2000, 7), "950 triangles in a row, a deep tree");
 }

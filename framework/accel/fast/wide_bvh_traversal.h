@@ -45,13 +45,19 @@ template<bool ANY_HIT> struct Triangle_Leaves {
 	float u = 0, v = 0; // and its barycentrics (where the pack is exact, Triangle::hit's)
 
 	// What a node's test fetches ahead for a leaf it finds (the leaves found are then fetched at
-	// once): its packs, consecutive and rarely in cache, and for the closest hit the first pack's
+	// once). The closest hit: its packs, consecutive and rarely in cache, and the first pack's
 	// normals, which the record most likely reads (fetched now, they arrive while the packs are
-	// tested, not after; the other packs' too would cost more lines than they save).
-	[[gnu::always_inline]] void prefetch_leaf(const Wide_Node& node, int slot) const {
-		uint32_t packs = (node.count[slot] + 3) / 4;
-		prefetch(&wide.triangle_packs[node.first[slot]], packs * sizeof(Triangle_Pack));
-		if (!ANY_HIT) prefetch(&wide.pack_normals[node.first[slot]], sizeof(Pack_Normals));
+	// tested, not after; the other packs' too would cost more lines than they save). Any hit: the
+	// leaf's first four lines, as much as a wide node's, since its first pack likely ends the query.
+	[[gnu::always_inline]] void fetch(uint32_t first_pack, uint32_t count) const {
+		uint32_t bytes = (count + 3) / 4 * uint32_t(sizeof(Triangle_Pack));
+		const char* start = reinterpret_cast<const char*>(&wide.triangle_packs[first_pack]);
+		if constexpr (ANY_HIT) {
+			for (uint32_t offset = 0; offset < 4 * 64; offset += 64) __builtin_prefetch(start + std::min(offset, bytes - 1));
+		} else {
+			prefetch(start, bytes);
+			prefetch(&wide.pack_normals[first_pack], sizeof(Pack_Normals));
+		}
 	}
 
 	// Tests the leaf's triangles against r, lowering r.dist_bounds.y to each closer hit; returns
@@ -95,7 +101,7 @@ template<bool ANY_HIT> struct Instance_Leaves {
 	const BVH<Instance>& bvh;
 	Trace closest;
 
-	void prefetch_leaf(const Wide_Node&, int) const {
+	void fetch(uint32_t, uint32_t) const {
 	}
 
 	bool visit(uint32_t first, uint32_t count, Ray& r) {
@@ -109,52 +115,60 @@ template<bool ANY_HIT> struct Instance_Leaves {
 	}
 };
 
-// Front to back (handouts/task3_bvh.md §3.3) over the wide nodes: test a node's children
-// (Lanes::hit_children), fetch those hit, go down into the nearest and keep the others on a stack,
-// with the t at which the ray enters them; at a leaf, leaves.visit(). The closest-hit query shrinks
-// the ray to each hit it finds; the any-hit query returns at the first, and takes first the child
-// hit whose box holds the longest piece of the ray (the likeliest to hold a hit: a surface spread
-// through a box is met in proportion to the length crossed), then the others in slot order, the
-// largest box first (widen()): any hit will do (the answer is the same in any order), and sorting
-// them all costs more than it saves. Returns whether an any-hit query found a hit.
-template<bool ANY_HIT, typename Lanes, typename Leaves>
-bool traverse(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
+// The children of wide nodes that a query has found and not yet visited: on the call stack rather
+// than behind a thread-local lookup, moved to the heap if a deep tree fills it (64 is three times
+// what the benchmark scenes' rays need; the stress suite has a deeper tree).
+template<typename Child> struct Waiting {
+	Child local[64];
+	std::vector<Child> heap;
+	Child* items = local;
+	size_t capacity = std::size(local), size = 0;
+
+	// Room for one more node's children.
+	void make_room() {
+		if (size + Wide_Node::WIDTH <= capacity) return;
+		if (items == local) heap.assign(local, local + size);
+		heap.resize(capacity *= 2);
+		items = heap.data();
+	}
+	void push(Child child) {
+		items[size++] = child;
+	}
+	Child pop() {
+		return items[--size];
+	}
+};
+
+// The closest hit, front to back (handouts/task3_bvh.md §3.3) over the wide nodes: test a node's
+// children (Lanes::hit_children), fetch those hit, go down into the nearest and keep the others
+// waiting, with the t at which the ray enters them; at a leaf, leaves.visit(), which shrinks the ray
+// to each hit it finds, so that the children waiting beyond it are dropped.
+template<typename Lanes, typename Leaves> void traverse_closest(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
 	struct Child { // a wide node (count 0) or a leaf's primitives
 		uint32_t first, count;
 		float t_enter;
 	};
-	// The children waiting, nearest on top: on the call stack rather than behind a thread-local
-	// lookup, moved to the heap if a deep tree fills it (64 is three times what the benchmark
-	// scenes' rays need; the stress suite has a deeper tree).
-	Child local_stack[64];
-	std::vector<Child> heap_stack;
-	Child* stack = local_stack;
-	size_t capacity = std::size(local_stack), top = 0;
-
+	Waiting<Child> waiting;
 	Ray r = ray; // r.dist_bounds.y shrinks to the closest hit found so far
 	Slab_Ray slab_ray(ray);
-	if (wide.nodes.empty()) return false;
+	if (wide.nodes.empty()) return;
 	Child child{0, 0, ray.dist_bounds.x}; // the root
 
 	while (true) {
 		if (child.count > 0) {
-			if (leaves.visit(child.first, child.count, r)) return true;
+			leaves.visit(child.first, child.count, r);
 		} else {
 			const Wide_Node& node = wide.nodes[child.first];
 			constexpr int WIDTH = Wide_Node::WIDTH;
 			float t_enter[WIDTH], t_exit[WIDTH];
 			unsigned mask = Lanes::hit_children(node, slab_ray, r.dist_bounds, t_enter, t_exit);
 			if (mask != 0) {
-				if (top + WIDTH > capacity) { // a deep tree: the stack moves to the heap, twice as large
-					if (stack == local_stack) heap_stack.assign(local_stack, local_stack + top);
-					heap_stack.resize(capacity *= 2);
-					stack = heap_stack.data();
-				}
+				waiting.make_room();
 				auto hit = [&](int slot) { return Child{node.first[slot], node.count[slot], t_enter[slot]}; };
 				// The children found, fetched at once (unless the tree stays in the cache anyway).
 				for (unsigned found = wide.fits_in_cache ? 0 : mask; found != 0; found &= found - 1) {
 					int slot = __builtin_ctz(found);
-					if (node.count[slot] > 0) leaves.prefetch_leaf(node, slot);
+					if (node.count[slot] > 0) leaves.fetch(node.first[slot], node.count[slot]);
 					else prefetch(&wide.nodes[node.first[slot]], sizeof(Wide_Node));
 				}
 				int near = __builtin_ctz(mask);
@@ -163,27 +177,11 @@ bool traverse(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
 					child = hit(near);
 					continue;
 				}
-				if constexpr (ANY_HIT) {
-					// Any hit ends the query: the longest crossing first, then the others in slot order.
-					int longest = near;
-					for (unsigned others = mask; others != 0; others &= others - 1) {
-						int slot = __builtin_ctz(others);
-						if (t_exit[slot] - t_enter[slot] > t_exit[longest] - t_enter[longest]) longest = slot;
-					}
-					unsigned rest = (mask | 1u << near) & ~(1u << longest);
-					while (rest != 0) { // pushed from the highest slot down, so the lowest is popped next
-						int slot = 31 - __builtin_clz(rest);
-						stack[top++] = hit(slot);
-						rest &= ~(1u << slot);
-					}
-					child = hit(longest);
-					continue;
-				}
 				int far = __builtin_ctz(mask);
 				mask &= mask - 1;
 				if (mask == 0) { // two: the nearer first, the lower slot on a tie (as the sort below)
 					if (t_enter[far] < t_enter[near]) std::swap(near, far);
-					stack[top++] = hit(far);
+					waiting.push(hit(far));
 					child = hit(near);
 					continue;
 				}
@@ -197,17 +195,72 @@ bool traverse(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
 					for (; at > 0 && hits[at - 1].t_enter > c.t_enter; at--) hits[at] = hits[at - 1];
 					hits[at] = c;
 				}
-				for (int i = count - 1; i > 0; i--) stack[top++] = hits[i]; // the nearest is popped first
+				for (int i = count - 1; i > 0; i--) waiting.push(hits[i]); // the nearest is popped first
 				child = hits[0];
 				continue;
 			}
 		}
-		// Pop the nearest pending child that still starts before the closest hit.
-		while (top > 0 && stack[top - 1].t_enter > r.dist_bounds.y) top--;
-		if (top == 0) break;
-		child = stack[--top];
+		// Pop the nearest waiting child that still starts before the closest hit.
+		while (waiting.size > 0 && waiting.items[waiting.size - 1].t_enter > r.dist_bounds.y) waiting.size--;
+		if (waiting.size == 0) return;
+		child = waiting.pop();
 	}
-	return false;
+}
+
+// Any hit (an occlusion query): the first hit found answers it, whatever the order, so the order
+// only decides how soon. Of the children a node's test finds, the query goes first into the one
+// whose box holds the longest piece of the ray (the likeliest to hold a hit: a surface spread
+// through a box is met in proportion to the length crossed), not counting the boxes that hold the
+// ray's start (their piece counts 0): rays start on a surface, which they leave there. The others
+// wait unsorted: sorting costs more than it saves. Each child found is fetched at once: a wide node
+// whole, a leaf's first lines (leaves.fetch()). Returns whether a hit was found.
+template<typename Lanes, typename Leaves> bool traverse_any(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
+	struct Child { // a wide node (count 0) or a leaf's primitives
+		uint32_t first, count;
+	};
+	Waiting<Child> waiting;
+	Ray r = ray;
+	Slab_Ray slab_ray(ray);
+	if (wide.nodes.empty()) return false;
+	Child child{0, 0}; // the root
+
+	while (true) {
+		if (child.count > 0) {
+			if (leaves.visit(child.first, child.count, r)) return true;
+		} else {
+			const Wide_Node& node = wide.nodes[child.first];
+			constexpr int WIDTH = Wide_Node::WIDTH;
+			float t_enter[WIDTH], t_exit[WIDTH];
+			unsigned mask = Lanes::hit_children(node, slab_ray, ray.dist_bounds, t_enter, t_exit);
+			if (mask != 0) {
+				waiting.make_room();
+				// Every child found waits; the one with the longest piece (the first of equals) is then
+				// taken back out, to be visited next.
+				int next_slot = __builtin_ctz(mask);
+				size_t next_at = waiting.size;
+				float longest = -1.0f;
+				for (unsigned found = mask; found != 0; found &= found - 1) {
+					int slot = __builtin_ctz(found);
+					Child found_child{node.first[slot], node.count[slot]};
+					if (!wide.fits_in_cache) {
+						if (found_child.count > 0) leaves.fetch(found_child.first, found_child.count);
+						else prefetch(&wide.nodes[found_child.first], sizeof(Wide_Node));
+					}
+					float piece = t_enter[slot] > ray.dist_bounds.x ? t_exit[slot] - t_enter[slot] : 0.0f;
+					bool longer = piece > longest;
+					longest = longer ? piece : longest;
+					next_slot = longer ? slot : next_slot;
+					next_at = longer ? waiting.size : next_at;
+					waiting.push(found_child);
+				}
+				child = Child{node.first[next_slot], node.count[next_slot]};
+				waiting.items[next_at] = waiting.pop(); // (the last in its place)
+				continue;
+			}
+		}
+		if (waiting.size == 0) return false;
+		child = waiting.pop();
+	}
 }
 
 // The closest triangle hit with t in ray.dist_bounds, that t and its barycentrics (NONE and INF_F
@@ -221,7 +274,7 @@ struct Closest_Triangle {
 template<typename Lanes>
 Closest_Triangle closest_triangle(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray, bool exact) {
 	Triangle_Leaves<false> leaves{bvh, wide, exact};
-	traverse<false, Lanes>(wide, ray, leaves);
+	traverse_closest<Lanes>(wide, ray, leaves);
 	return Closest_Triangle{leaves.best, leaves.t, leaves.u, leaves.v, leaves.best_lane};
 }
 
@@ -264,7 +317,7 @@ template<typename Lanes> Trace flat_hit(const BVH<Instance>& objects, const Flat
 		Instance_Leaves<false> others{objects, Trace{}};
 		Ray rest = ray;
 		rest.dist_bounds.y = std::min(rest.dist_bounds.y, nearest.t);
-		traverse<false, Lanes>(flat.others, rest, others);
+		traverse_closest<Lanes>(flat.others, rest, others);
 		if (others.closest.hit) {
 			trace = others.closest;
 			return trace;
@@ -278,9 +331,9 @@ template<typename Lanes> Trace flat_hit(const BVH<Instance>& objects, const Flat
 
 template<typename Lanes> bool flat_occluded(const BVH<Instance>& objects, const Flat_Meshes& flat, const Ray& ray) {
 	Triangle_Leaves<true> triangles{flat.triangles, flat.wide, false};
-	if (traverse<true, Lanes>(flat.wide, ray, triangles)) return true;
+	if (traverse_any<Lanes>(flat.wide, ray, triangles)) return true;
 	Instance_Leaves<true> others{objects, Trace{}};
-	return traverse<true, Lanes>(flat.others, ray, others);
+	return traverse_any<Lanes>(flat.others, ray, others);
 }
 
 
@@ -294,18 +347,18 @@ template<typename Lanes> struct Queries {
 	}
 	static bool triangles_occluded(const BVH<Triangle>& bvh, const Wide_BVH& wide, const Ray& ray) {
 		Triangle_Leaves<true> leaves{bvh, wide, false};
-		return traverse<true, Lanes>(wide, ray, leaves);
+		return traverse_any<Lanes>(wide, ray, leaves);
 	}
 	static Trace hit_objects(const BVH<Instance>& bvh, const Wide_BVH& wide, const Ray& ray) {
 		if (wide.flat) return flat_hit<Lanes>(bvh, *wide.flat, ray);
 		Instance_Leaves<false> leaves{bvh, Trace{}};
-		traverse<false, Lanes>(wide, ray, leaves);
+		traverse_closest<Lanes>(wide, ray, leaves);
 		return leaves.closest;
 	}
 	static bool objects_occluded(const BVH<Instance>& bvh, const Wide_BVH& wide, const Ray& ray) {
 		if (wide.flat) return flat_occluded<Lanes>(bvh, *wide.flat, ray);
 		Instance_Leaves<true> leaves{bvh, Trace{}};
-		return traverse<true, Lanes>(wide, ray, leaves);
+		return traverse_any<Lanes>(wide, ray, leaves);
 	}
 	static constexpr Wide_Queries table(int lanes) {
 		return Wide_Queries{lanes, hit_triangles, triangles_occluded, hit_objects, objects_occluded};
