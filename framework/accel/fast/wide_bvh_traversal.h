@@ -53,7 +53,8 @@ template<bool ANY_HIT> struct Triangle_Leaves {
 		uint32_t bytes = (count + 3) / 4 * uint32_t(sizeof(Triangle_Pack));
 		const char* start = reinterpret_cast<const char*>(&wide.triangle_packs[first_pack]);
 		if constexpr (ANY_HIT) {
-			for (uint32_t offset = 0; offset < 4 * 64; offset += 64) __builtin_prefetch(start + std::min(offset, bytes - 1));
+			for (uint32_t offset = 0; offset < 4 * 64; offset += 64)
+				__builtin_prefetch(start + std::min(offset, bytes - 1)); // none past the leaf's end
 		} else {
 			prefetch(start, bytes);
 			prefetch(&wide.pack_normals[first_pack], sizeof(Pack_Normals));
@@ -124,6 +125,10 @@ template<typename Child> struct Waiting {
 	Child* items = local;
 	size_t capacity = std::size(local), size = 0;
 
+	Waiting() = default;
+	Waiting(const Waiting&) = delete; // `items` may point into `local`
+	Waiting& operator=(const Waiting&) = delete;
+
 	// Room for one more node's children.
 	void make_room() {
 		if (size + Wide_Node::WIDTH <= capacity) return;
@@ -143,7 +148,8 @@ template<typename Child> struct Waiting {
 // children (Lanes::hit_children), fetch those hit, go down into the nearest and keep the others
 // waiting, with the t at which the ray enters them; at a leaf, leaves.visit(), which shrinks the ray
 // to each hit it finds, so that the children waiting beyond it are dropped.
-template<typename Lanes, typename Leaves> void traverse_closest(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
+template<typename Lanes, typename Leaves>
+void traverse_closest(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
 	struct Child { // a wide node (count 0) or a leaf's primitives
 		uint32_t first, count;
 		float t_enter;
@@ -214,7 +220,8 @@ template<typename Lanes, typename Leaves> void traverse_closest(const Wide_BVH& 
 // ray's start (their piece counts 0): rays start on a surface, which they leave there. The others
 // wait unsorted: sorting costs more than it saves. Each child found is fetched at once: a wide node
 // whole, a leaf's first lines (leaves.fetch()). Returns whether a hit was found.
-template<typename Lanes, typename Leaves> bool traverse_any(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
+template<typename Lanes, typename Leaves>
+bool traverse_any(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
 	struct Child { // a wide node (count 0) or a leaf's primitives
 		uint32_t first, count;
 	};
