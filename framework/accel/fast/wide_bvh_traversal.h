@@ -144,6 +144,14 @@ template<typename Child> struct Waiting {
 	}
 };
 
+// Starts loading a child that a node's test found: a wide node whole, a leaf as `leaves` fetches it.
+template<typename Leaves>
+[[gnu::always_inline]] inline void fetch_child(const Wide_BVH& wide, const Wide_Node& node, int slot,
+                                               const Leaves& leaves) {
+	if (node.count[slot] > 0) leaves.fetch(node.first[slot], node.count[slot]);
+	else prefetch(&wide.nodes[node.first[slot]], sizeof(Wide_Node));
+}
+
 // The closest hit, front to back (handouts/task3_bvh.md §3.3) over the wide nodes: test a node's
 // children (Lanes::hit_children), fetch those hit, go down into the nearest and keep the others
 // waiting, with the t at which the ray enters them; at a leaf, leaves.visit(), which shrinks the ray
@@ -172,11 +180,8 @@ void traverse_closest(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
 				waiting.make_room();
 				auto hit = [&](int slot) { return Child{node.first[slot], node.count[slot], t_enter[slot]}; };
 				// The children found, fetched at once (unless the tree stays in the cache anyway).
-				for (unsigned found = wide.fits_in_cache ? 0 : mask; found != 0; found &= found - 1) {
-					int slot = __builtin_ctz(found);
-					if (node.count[slot] > 0) leaves.fetch(node.first[slot], node.count[slot]);
-					else prefetch(&wide.nodes[node.first[slot]], sizeof(Wide_Node));
-				}
+				for (unsigned found = wide.fits_in_cache ? 0 : mask; found != 0; found &= found - 1)
+					fetch_child(wide, node, __builtin_ctz(found), leaves);
 				int near = __builtin_ctz(mask);
 				mask &= mask - 1;
 				if (mask == 0) { // one child hit (the common case): nothing to order
@@ -248,17 +253,13 @@ bool traverse_any(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
 				float longest = -1.0f;
 				for (unsigned found = mask; found != 0; found &= found - 1) {
 					int slot = __builtin_ctz(found);
-					Child found_child{node.first[slot], node.count[slot]};
-					if (!wide.fits_in_cache) {
-						if (found_child.count > 0) leaves.fetch(found_child.first, found_child.count);
-						else prefetch(&wide.nodes[found_child.first], sizeof(Wide_Node));
-					}
+					if (!wide.fits_in_cache) fetch_child(wide, node, slot, leaves);
 					float piece = t_enter[slot] > ray.dist_bounds.x ? t_exit[slot] - t_enter[slot] : 0.0f;
 					bool longer = piece > longest;
 					longest = longer ? piece : longest;
 					next_slot = longer ? slot : next_slot;
 					next_at = longer ? waiting.size : next_at;
-					waiting.push(found_child);
+					waiting.push(Child{node.first[slot], node.count[slot]});
 				}
 				child = Child{node.first[next_slot], node.count[next_slot]};
 				waiting.items[next_at] = waiting.pop(); // (the last in its place)
