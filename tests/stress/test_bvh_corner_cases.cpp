@@ -180,10 +180,11 @@ TEST_CASE("Stress: a BVH over 10^6 identical triangles builds and hits like one 
 TEST_CASE("Stress: BVH equals brute force on a tree dozens of levels deep", "[stress][task3]") {
 	// 950 parallel triangles in the planes x = 1e-37 * 1.2^k, spread over float's whole range:
 	// binned SAH splits off a dozen at a time, 66 levels deep, and a ray along the row overlaps the
-	// boxes of everything ahead of it, so the traversal keeps some 110 children waiting (more than
-	// the 64 the fast accelerator's stack holds before it moves to the heap). The last ten triangles face the
-	// other way (they cover y + z >= 1, the others y + z <= 1): a ray with y + z > 1 passes by every
-	// triangle until them, so its hit is in a child that waited at the bottom of the stack.
+	// boxes of everything ahead of it, so the closest-hit traversal keeps some 110 children waiting
+	// (more than the 64 the fast accelerator's stack holds before it moves to the heap). The last
+	// ten triangles face the other way (they cover y + z >= 1, the others y + z <= 1): a ray with
+	// y + z > 1 passes by every triangle until them, so its hit is in a child that waited at the
+	// bottom of the stack.
 	std::vector<Triangle> tris;
 	for (int k = 0; k < 950; k++) {
 		float x = float(1e-37 * std::pow(1.2, k));
