@@ -231,7 +231,7 @@ bool traverse_any(const Wide_BVH& wide, const Ray& ray, Leaves& leaves) {
 		uint32_t first, count;
 	};
 	Waiting<Child> waiting;
-	Ray r = ray;
+	Ray r = ray; // for leaves.visit(), which shrinks only a closest hit's ray
 	Slab_Ray slab_ray(ray);
 	if (wide.nodes.empty()) return false;
 	Child child{0, 0}; // the root
