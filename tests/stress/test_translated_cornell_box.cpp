@@ -27,6 +27,8 @@ constexpr float OFFSET = 1e4f;
 // scenes/cornell_box.json at SIZE x SIZE pixels, every vertex and the camera moved by `offset`.
 std::string translated_cornell_box(const Temp_Dir& dir, const std::string& name, Vec3 offset) {
 	std::ifstream in("scenes/cornell_box.json");
+	INFO("cannot read scenes/cornell_box.json: run the suite from the repository's root, as ctest does");
+	REQUIRE(in.good());
 	nlohmann::json scene = nlohmann::json::parse(in);
 	auto move = [&](nlohmann::json& p) {
 		for (int i = 0; i < 3; i++) p[i] = p[i].get<double>() + double(offset[i]);
