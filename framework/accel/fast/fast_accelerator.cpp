@@ -28,15 +28,6 @@ const Wide_Queries& chosen_queries() {
 	return chosen;
 }
 
-namespace {
-
-size_t bytes_of(const Wide_BVH& wide) {
-	return wide.nodes.capacity() * sizeof(Wide_Node) + wide.triangle_packs.capacity() * sizeof(Triangle_Pack) +
-	       wide.pack_normals.capacity() * sizeof(Pack_Normals);
-}
-
-} // namespace
-
 template<typename Primitive> Accelerator<Primitive>::Accelerator(const BVH<Primitive>& bvh) {
 	Wide_BVH folded;
 	if constexpr (std::is_same_v<Primitive, Instance>) folded.flat = flatten(bvh);
@@ -59,10 +50,10 @@ template<typename Primitive> bool Accelerator<Primitive>::occluded(const BVH<Pri
 
 template<typename Primitive> size_t Accelerator<Primitive>::bytes() const {
 	if (!wide) return 0;
-	size_t bytes = bytes_of(*wide);
+	size_t bytes = wide->bytes();
 	if (wide->flat) {
 		const Flat_Meshes& flat = *wide->flat;
-		bytes += bytes_of(flat.wide) + bytes_of(flat.others) + flat.owner.capacity() * sizeof(uint32_t) +
+		bytes += flat.wide.bytes() + flat.others.bytes() + flat.owner.capacity() * sizeof(uint32_t) +
 		         flat.triangles.nodes.capacity() * sizeof(flat.triangles.nodes[0]) +
 		         flat.triangles.primitives.capacity() * sizeof(Triangle);
 	}

@@ -58,6 +58,12 @@ struct Wide_BVH {
 	bool fits_in_cache = false;
 	// The accelerator's: its queries, for the vector width chosen (wide_bvh_queries.h).
 	const Wide_Queries* queries = nullptr;
+
+	// The memory its nodes, packs and normals hold (not `flat`'s).
+	size_t bytes() const {
+		return nodes.capacity() * sizeof(Wide_Node) + triangle_packs.capacity() * sizeof(Triangle_Pack) +
+		       pack_normals.capacity() * sizeof(Pack_Normals);
+	}
 };
 
 // The objects of a scene that sit where they were modelled (no transform of their own) and are

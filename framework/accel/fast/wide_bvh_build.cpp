@@ -112,9 +112,7 @@ template<typename Primitive> Wide_BVH widen(const BVH<Primitive>& bvh) {
 	wide.nodes.shrink_to_fit();
 	wide.triangle_packs.shrink_to_fit();
 	wide.pack_normals.shrink_to_fit();
-	size_t bytes = wide.nodes.size() * sizeof(Wide_Node) + wide.triangle_packs.size() * sizeof(Triangle_Pack) +
-	               wide.pack_normals.size() * sizeof(Pack_Normals);
-	wide.fits_in_cache = bytes <= 32 * 1024;
+	wide.fits_in_cache = wide.bytes() <= 32 * 1024;
 	return wide;
 }
 
